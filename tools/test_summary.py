@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Summarize every JUnit XML of a test run: one line per suite, then 'N passed, N failed'.
 
-gtest 1.12 writes its totals at two levels and rostest repeats the cases of the gtest it
-launched, so we count <testcase> elements, once per (suite, case) pair.
+gtest 1.12 writes its totals at two levels, so we count <testcase> elements. rostest adds a
+wrapper case per launched test node whose own cases are in a rosunit-*.xml: the wrapper counts
+only when it fails (the node crashed, timed out or wrote no result).
 """
 import pathlib
 import sys
@@ -16,11 +17,12 @@ def main(dirs):
         for path in sorted(pathlib.Path(top).rglob("*.xml")):
             try:
                 for suite, case, status, msg in read_cases(path):
-                    key = (suite, case)
-                    if results.get(key, ("pass",))[0] != "fail":  # a failure anywhere sticks
-                        results[key] = (status, msg, path.name)
+                    if suite == "rostest.runner.RosTest" and status != "fail":
+                        continue
+                    key = (f"{path.parent.name}/{suite}", f"{path.name}:{case}")
+                    results[key] = (status, msg, path.name)
             except Exception as exc:  # an unreadable result is a failure, not a silent pass
-                results[(path.name, "parse")] = ("fail", f"unreadable result file: {exc}", path.name)
+                results[(path.parent.name, f"{path.name}:parse")] = ("fail", f"unreadable result file: {exc}", path.name)
     suites = {}
     for (suite, case), (status, msg, _) in sorted(results.items()):
         suites.setdefault(suite, []).append((case, status, msg))

@@ -1,0 +1,155 @@
+// ROS layer of the one-switch interface: /switch events and named places in, goals, stop
+// requests, announcements and rviz markers out.
+#include <wheelchair_hmi/places.h>
+#include <wheelchair_hmi/switch_scanner.h>
+#include <wheelchair_msgs/GoToPlace.h>
+
+#include <geometry_msgs/PoseStamped.h>
+#include <nodelet/nodelet.h>
+#include <ros/ros.h>
+#include <std_msgs/Empty.h>
+#include <std_msgs/String.h>
+#include <visualization_msgs/MarkerArray.h>
+#include <pluginlib/class_list_macros.hpp>
+
+#include <cmath>
+#include <memory>
+#include <mutex>
+
+namespace wheelchair_hmi {
+
+class HmiNodelet : public nodelet::Nodelet {
+ private:
+  void onInit() override {
+    ros::NodeHandle nh = getNodeHandle(), pnh = getPrivateNodeHandle();
+    std::string places_file;
+    if (!pnh.getParam("places_file", places_file)) {
+      NODELET_FATAL("~places_file is not set: no destinations to offer");
+      return;
+    }
+    ScannerOptions options;
+    pnh.param("scan_interval", options.scan_interval, options.scan_interval);
+    pnh.param("confirm_timeout", options.confirm_timeout, options.confirm_timeout);
+    pnh.param("item_cycles", options.item_cycles, options.item_cycles);
+    pnh.param<std::string>("frame_id", frame_id_, "map");
+    try {
+      scanner_ = std::make_unique<SwitchScanner>(loadPlaces(places_file), options);
+    } catch (const std::exception& e) {
+      NODELET_FATAL("%s", e.what());
+      return;
+    }
+    goal_pub_ = nh.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 1);
+    stop_pub_ = nh.advertise<std_msgs::Empty>("user_stop", 1);
+    announce_pub_ = nh.advertise<std_msgs::String>("hmi/announce", 10, true);
+    marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("hmi/markers", 1, true);
+    switch_sub_ = nh.subscribe("switch", 10, &HmiNodelet::onSwitch, this);
+    go_to_sub_ = nh.subscribe("hmi/go_to", 1, &HmiNodelet::onGoTo, this);
+    finished_sub_ = nh.subscribe("hmi/finished", 1, &HmiNodelet::onFinished, this);
+    go_to_srv_ = nh.advertiseService("go_to_place", &HmiNodelet::onGoToService, this);
+    timer_ = nh.createTimer(ros::Duration(0.1), &HmiNodelet::onTimer, this);
+    std::lock_guard<std::mutex> lock(mutex_);
+    handle(scanner_->start(ros::Time::now().toSec()));
+  }
+
+  void onTimer(const ros::TimerEvent&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    handle(scanner_->tick(ros::Time::now().toSec()));
+  }
+
+  void onSwitch(const std_msgs::Empty::ConstPtr&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    handle(scanner_->press(ros::Time::now().toSec()));
+  }
+
+  void onFinished(const std_msgs::Empty::ConstPtr&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    handle(scanner_->finished(ros::Time::now().toSec()));
+  }
+
+  void onGoTo(const std_msgs::String::ConstPtr& msg) {
+    wheelchair_msgs::GoToPlace::Request request;
+    wheelchair_msgs::GoToPlace::Response response;
+    request.name = msg->data;
+    onGoToService(request, response);
+  }
+
+  bool onGoToService(wheelchair_msgs::GoToPlace::Request& request,
+                     wheelchair_msgs::GoToPlace::Response& response) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const Place* place = findPlace(scanner_->places(), request.name);
+    response.accepted = place != nullptr;
+    response.message =
+        place ? "Going to " + place->name + "." : "No place called '" + request.name + "'.";
+    announce(response.message);
+    if (place) publishGoal(*place);
+    return true;
+  }
+
+  void handle(const ScanOutput& out) {
+    if (out.kind == ScanOutput::Kind::kNone) return;
+    announce(out.text);
+    if (out.kind == ScanOutput::Kind::kGo) publishGoal(*out.place);
+    if (out.kind == ScanOutput::Kind::kStop) stop_pub_.publish(std_msgs::Empty());
+    publishMarkers(out);
+  }
+
+  void announce(const std::string& text) {
+    NODELET_INFO("[switch] %s", text.c_str());
+    std_msgs::String msg;
+    msg.data = text;
+    announce_pub_.publish(msg);
+  }
+
+  void publishGoal(const Place& place) {
+    geometry_msgs::PoseStamped goal;
+    goal.header.frame_id = frame_id_;
+    goal.header.stamp = ros::Time::now();
+    goal.pose.position.x = place.x;
+    goal.pose.position.y = place.y;
+    goal.pose.orientation.z = std::sin(0.5 * place.yaw);
+    goal.pose.orientation.w = std::cos(0.5 * place.yaw);
+    goal_pub_.publish(goal);
+  }
+
+  /// Every place as a sphere with its name; the highlighted room or place stands out.
+  void publishMarkers(const ScanOutput& out) {
+    visualization_msgs::MarkerArray array;
+    const auto& places = scanner_->places();
+    for (size_t i = 0; i < places.size(); ++i) {
+      const bool lit = out.place ? out.place == &places[i] : places[i].room == out.group;
+      for (int text = 0; text < 2; ++text) {
+        visualization_msgs::Marker m;
+        m.header.frame_id = frame_id_;
+        m.header.stamp = ros::Time::now();
+        m.ns = text ? "place_names" : "places";
+        m.id = static_cast<int>(i);
+        m.type = text ? visualization_msgs::Marker::TEXT_VIEW_FACING
+                      : visualization_msgs::Marker::SPHERE;
+        m.text = text ? places[i].name : "";
+        m.pose.position.x = places[i].x;
+        m.pose.position.y = places[i].y;
+        m.pose.position.z = text ? 0.5 : 0.1;
+        m.pose.orientation.w = 1.0;
+        m.scale.x = m.scale.y = m.scale.z = lit ? 0.45 : 0.2;
+        m.color.a = 1.0;
+        m.color.r = lit ? 1.0f : 0.3f;
+        m.color.g = lit ? 0.8f : 0.3f;
+        m.color.b = lit ? 0.0f : 0.9f;
+        array.markers.push_back(m);
+      }
+    }
+    marker_pub_.publish(array);
+  }
+
+  std::mutex mutex_;
+  std::unique_ptr<SwitchScanner> scanner_;
+  std::string frame_id_;
+  ros::Publisher goal_pub_, stop_pub_, announce_pub_, marker_pub_;
+  ros::Subscriber switch_sub_, go_to_sub_, finished_sub_;
+  ros::ServiceServer go_to_srv_;
+  ros::Timer timer_;
+};
+
+}  // namespace wheelchair_hmi
+
+PLUGINLIB_EXPORT_CLASS(wheelchair_hmi::HmiNodelet, nodelet::Nodelet)
