@@ -204,7 +204,7 @@ def office():
     w.vwall(12.0, 0.2, 23.8, 0.15)  # lobby | rest of the floor
     w.hwall(cy0 - 0.15, 12.15, 59.8, 0.15)  # corridor south wall
     w.hwall(cy1, 12.15, 59.8, 0.15)  # corridor north wall
-    w.door_in_vwall("lobby_corridor", 12.0, 0.15, cy0, 1.80)  # the corridor opens into the lobby
+    w.rect(12.0, cy0, 12.15, cy1, FREE)  # the corridor opens into the lobby
     # lobby: reception desk, two pillars, a bench (asymmetric on purpose)
     w.rect(3.0, 15.0, 7.0, 15.8)
     w.rect(6.2, 15.8, 7.0, 17.5)  # L-shaped reception desk
@@ -234,7 +234,6 @@ def office():
         left = x0 + (0.15 if i else 0.0)
         if x0 == 37.85:  # the side corridor (clear 38.0 .. 39.8): open to the main one, no furniture
             w.rect(left, cy0 - 0.15, x1, cy0, FREE)
-            w.doors.append(("side_corridor", (left + x1) / 2, cy0 - 0.075, "x", x1 - left))
             w.place("side_corridor", "side_corridor_end", (left + x1) / 2, 1.5, -90)
             continue
         door_x = x1 - 1.5 - 0.2 * (i % 4)
@@ -280,7 +279,7 @@ def symmetric():
     half.rect(10.0, 0.2, 12.0, 4.1)
     half.rect(10.0, 5.9, 12.0, 9.8)  # solid around the corridor y in [4.1, 5.9]
     half.vwall(9.9, 0.2, 9.8, 0.1)
-    half.door_in_vwall("room_a_corridor", 9.9, 0.1, 4.1, 1.8)
+    half.rect(9.9, 4.1, 10.0, 5.9, FREE)  # the room opens into the corridor
     half.rect(1.0, 1.0, 3.0, 2.0)  # table
     half.rect(0.2, 6.0, 0.8, 9.0)  # shelf
     half.rect(6.0, 7.5, 7.0, 9.8)  # cupboard
@@ -290,7 +289,6 @@ def symmetric():
     for name, x, y, yaw in [("a_table", 2.0, 3.0, -90), ("a_shelf", 2.0, 7.5, 180), ("a_middle", 5.0, 5.5, 0)]:
         w.place("room_a", name, x, y, yaw)
         w.place("room_b", "b" + name[1:], 24.0 - x, 10.0 - y, yaw + 180 if yaw <= 0 else yaw - 180)
-    w.doors = half.doors + [("room_b_corridor", 24.0 - d[1], 10.0 - d[2], d[3], d[4]) for d in half.doors]
     return w
 
 
