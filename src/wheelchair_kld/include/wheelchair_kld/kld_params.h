@@ -1,0 +1,68 @@
+// Every tunable of the localizer, with defaults that work on the project's worlds.
+#pragma once
+
+#include <cstdint>
+
+namespace wheelchair_kld {
+
+/// Odometry motion model noise (Thrun et al., sample_motion_model_odometry).
+struct MotionNoise {
+  double alpha1 = 0.05;  ///< rotation noise from rotation [rad^2/rad^2]
+  double alpha2 = 0.02;  ///< rotation noise from translation [rad^2/m^2]
+  double alpha3 = 0.05;  ///< translation noise from translation [m^2/m^2]
+  double alpha4 = 0.02;  ///< translation noise from rotation [m^2/rad^2]
+  /// Standard deviation floor added at every update (keeps duplicates apart at standstill).
+  double min_xy_std = 0.005;      ///< [m]
+  double min_theta_std = 0.0035;  ///< [rad]
+};
+
+enum class MeasurementModelType { kLikelihoodField, kBeam };
+
+struct MeasurementParams {
+  MeasurementModelType type = MeasurementModelType::kLikelihoodField;
+  int beam_step = 6;       ///< use every beam_step-th beam (361 -> 61)
+  double sigma_hit = 0.1;  ///< [m] std of the hit component
+  double z_hit = 0.9;      ///< mixture weights (likelihood field: hit + random)
+  double z_rand = 0.1;
+  double z_short = 0.05;      ///< beam model only
+  double z_max = 0.05;        ///< beam model only
+  double lambda_short = 0.5;  ///< beam model only [1/m]
+  double max_range = 30.0;    ///< [m] beams at or beyond this carry no information
+  double max_distance = 2.0;  ///< [m] likelihood-field distance cap
+  /// Exponent applied to the log-likelihood (beams are not independent; < 1 tempers).
+  double likelihood_exponent = 1.0;
+};
+
+struct KldParams {
+  // KLD-sampling (Fox 2003).
+  double epsilon = 0.05;      ///< K-L error bound
+  double delta = 0.01;        ///< 1 - confidence
+  double bin_xy = 0.25;       ///< [m] histogram bin size
+  double bin_theta = 0.1745;  ///< [rad] (10 deg)
+  int min_particles = 200;    ///< M_min
+  int max_particles = 30000;  ///< M_max
+  /// When > 0 the filter is plain fixed-size MCL with this many particles (for comparison).
+  int fixed_particles = 0;
+
+  // Update gating: filter only after this much travel since the last update.
+  double update_min_d = 0.05;  ///< [m]
+  double update_min_a = 0.05;  ///< [rad]
+
+  // Augmented MCL (Thrun et al. Table 8.3) for kidnapping recovery; 0 disables.
+  double alpha_slow = 0.001;
+  double alpha_fast = 0.1;
+  /// Injection starts only when the fast average falls below this fraction of the slow one.
+  double recovery_ratio = 0.5;
+
+  // Cluster estimate and "localized" status.
+  double cluster_xy = 0.5;                  ///< [m] cells of the clustering grid
+  double cluster_theta = 0.5236;            ///< [rad] (30 deg)
+  double localized_max_xy_std = 0.25;       ///< [m]
+  double localized_max_theta_std = 0.1745;  ///< [rad]
+  double localized_min_cluster_weight = 0.9;
+
+  MotionNoise motion;
+  MeasurementParams measurement;
+};
+
+}  // namespace wheelchair_kld

@@ -1,0 +1,44 @@
+// Laser measurement models on the LocalizationMap: the likelihood field (default) and the beam
+// model (Thrun, Burgard, Fox ch. 6), over a subsampled set of beams.
+#pragma once
+
+#include <mrpt/math/TPose2D.h>
+#include <wheelchair_kld/kld_params.h>
+#include <wheelchair_kld/laser_scan.h>
+#include <wheelchair_kld/localization_map.h>
+
+#include <vector>
+
+namespace wheelchair_kld {
+
+class MeasurementModel {
+ public:
+  MeasurementModel(const LocalizationMap& map, const MeasurementParams& params);
+
+  /// Selects every beam_step-th beam of a validated scan and precomputes it in base_link.
+  /// Returns the number of beams used.
+  int setScan(const LaserScan& scan);
+  int beamCount() const { return static_cast<int>(beams_.size()); }
+
+  /// Tempered log p(z | pose, map) of the current scan for a robot (base_link) pose.
+  double logLikelihood(const mrpt::math::TPose2D& pose) const;
+
+ private:
+  struct Beam {
+    double end_x, end_y;  ///< endpoint in base_link (likelihood field)
+    double angle;         ///< beam direction in base_link (beam model)
+    double range;
+    bool max_range;  ///< no echo
+  };
+  double logLikelihoodField(const mrpt::math::TPose2D& pose) const;
+  double logBeamModel(const mrpt::math::TPose2D& pose) const;
+
+  const LocalizationMap& map_;
+  MeasurementParams params_;
+  std::vector<float> field_log_;  ///< per-cell log(z_hit N(d; 0, sigma) + z_rand / max_range)
+  double outside_log_;
+  mrpt::math::TPose2D sensor_pose_;
+  std::vector<Beam> beams_;
+};
+
+}  // namespace wheelchair_kld

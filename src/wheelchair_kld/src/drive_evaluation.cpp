@@ -1,0 +1,56 @@
+#include <mrpt/math/wrap2pi.h>
+#include <wheelchair_kld/drive_evaluation.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace wheelchair_kld {
+
+std::vector<StepRecord> runDrive(KldLocalizer& localizer, const std::vector<DriveSample>& drive) {
+  std::vector<StepRecord> out;
+  out.reserve(drive.size());
+  for (const auto& s : drive) {
+    StepRecord r;
+    const auto t0 = std::chrono::steady_clock::now();
+    r.updated = localizer.update(s.odom, s.scan) == UpdateResult::kUpdated;
+    r.update_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const auto& e = localizer.estimate().mean;
+    r.error_xy = std::hypot(e.x - s.truth.x, e.y - s.truth.y);
+    r.error_theta = std::abs(mrpt::math::wrapToPi(e.phi - s.truth.phi));
+    r.particles = static_cast<int>(localizer.particles().size());
+    r.localized = localizer.status().localized;
+    out.push_back(r);
+  }
+  return out;
+}
+
+DriveSummary summarize(const std::vector<StepRecord>& steps, size_t from) {
+  DriveSummary s;
+  std::vector<double> times;
+  double sxy = 0, sth = 0, sp = 0;
+  for (size_t i = from; i < steps.size(); ++i) {
+    const auto& r = steps[i];
+    if (!r.updated) continue;
+    ++s.updates;
+    sxy += r.error_xy * r.error_xy;
+    sth += r.error_theta * r.error_theta;
+    s.max_xy = std::max(s.max_xy, r.error_xy);
+    sp += r.particles;
+    s.max_particles = std::max(s.max_particles, r.particles);
+    times.push_back(r.update_ms);
+  }
+  if (s.updates == 0) return s;
+  s.rms_xy = std::sqrt(sxy / s.updates);
+  s.rms_theta = std::sqrt(sth / s.updates);
+  s.mean_particles = sp / s.updates;
+  double tsum = 0;
+  for (double t : times) tsum += t;
+  s.mean_ms = tsum / times.size();
+  std::sort(times.begin(), times.end());
+  s.p99_ms = times[std::min(times.size() - 1, static_cast<size_t>(0.99 * times.size()))];
+  return s;
+}
+
+}  // namespace wheelchair_kld

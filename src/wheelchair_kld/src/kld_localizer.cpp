@@ -1,0 +1,169 @@
+#include <mrpt/math/wrap2pi.h>
+#include <wheelchair_kld/kld_bound.h>
+#include <wheelchair_kld/kld_localizer.h>
+#include <wheelchair_kld/odometry_motion_model.h>
+#include <wheelchair_kld/pose_bins.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace wheelchair_kld {
+
+using mrpt::math::TPose2D;
+
+KldLocalizer::KldLocalizer(std::shared_ptr<const LocalizationMap> map, const KldParams& params,
+                           uint64_t seed)
+    : map_(std::move(map)), params_(params), measurement_(*map_, params_.measurement) {
+  rng_.randomize(static_cast<uint32_t>(seed));
+}
+
+void KldLocalizer::resetRecovery() {
+  w_slow_ = w_fast_ = 0;
+  pending_first_update_ = true;
+}
+
+void KldLocalizer::initGlobal() {
+  const int n = params_.fixed_particles > 0 ? params_.fixed_particles : params_.max_particles;
+  particles_.assign(n, Particle());
+  for (auto& p : particles_) {
+    p.d = map_->sampleFreePose(rng_);
+    p.log_w = -std::log(static_cast<double>(n));
+  }
+  resetRecovery();
+  normalizeAndEstimate();
+}
+
+void KldLocalizer::initGaussian(const TPose2D& mean, const mrpt::math::CMatrixDouble33& cov) {
+  const int n =
+      params_.fixed_particles > 0 ? params_.fixed_particles : std::max(params_.min_particles, 1000);
+  Eigen::Matrix3d c = cov.asEigen();
+  Eigen::LLT<Eigen::Matrix3d> llt(c + 1e-12 * Eigen::Matrix3d::Identity());
+  const Eigen::Matrix3d l = llt.matrixL();
+  particles_.assign(n, Particle());
+  for (auto& p : particles_) {
+    const Eigen::Vector3d z(rng_.drawGaussian1D(0, 1), rng_.drawGaussian1D(0, 1),
+                            rng_.drawGaussian1D(0, 1));
+    const Eigen::Vector3d e = l * z;
+    p.d = TPose2D(mean.x + e(0), mean.y + e(1), mrpt::math::wrapToPi(mean.phi + e(2)));
+    p.log_w = -std::log(static_cast<double>(n));
+  }
+  resetRecovery();
+  normalizeAndEstimate();
+}
+
+UpdateResult KldLocalizer::update(const TPose2D& odom, const LaserScan& scan, bool force) {
+  if (expected_beams_ == 0) expected_beams_ = static_cast<int>(scan.ranges.size());
+  last_rejection_ = validateScan(scan, expected_beams_);
+  if (last_rejection_.empty() &&
+      !(std::isfinite(odom.x) && std::isfinite(odom.y) && std::isfinite(odom.phi)))
+    last_rejection_ = "odometry pose is not finite";
+  if (!last_rejection_.empty()) return UpdateResult::kRejected;
+  if (!initialized()) return UpdateResult::kNotInitialized;
+  const TPose2D from = last_odom_.value_or(odom);
+  const double moved = std::hypot(odom.x - from.x, odom.y - from.y);
+  const double turned = std::abs(mrpt::math::wrapToPi(odom.phi - from.phi));
+  if (!force && !pending_first_update_ && moved < params_.update_min_d &&
+      turned < params_.update_min_a)
+    return UpdateResult::kNoMotion;
+  measurement_.setScan(scan);
+  sampleStep(from, odom);
+  last_odom_ = odom;
+  pending_first_update_ = false;
+  normalizeAndEstimate();
+  return UpdateResult::kUpdated;
+}
+
+void KldLocalizer::sampleStep(const TPose2D& odom_from, const TPose2D& odom_to) {
+  const OdometryIncrement u = decomposeOdometry(odom_from, odom_to);
+  // Cumulative weights of the previous set for drawing with probability w_{t-1} (line 6).
+  std::vector<double> cumulative(particles_.size());
+  double acc = 0;
+  for (size_t i = 0; i < particles_.size(); ++i)
+    cumulative[i] = acc += std::exp(particles_[i].log_w);
+  // Augmented MCL: share of random poses from the short/long-term likelihood averages.
+  const double inject = (w_slow_ > 0 && params_.alpha_slow > 0)
+                            ? std::max(0.0, 1.0 - w_fast_ / (params_.recovery_ratio * w_slow_))
+                            : 0.0;
+  const bool fixed = params_.fixed_particles > 0;
+  const int m_min = fixed ? params_.fixed_particles : params_.min_particles;
+  const int m_max = fixed ? params_.fixed_particles : params_.max_particles;
+  const int beams = std::max(1, measurement_.beamCount());
+  PoseBins bins(params_.bin_xy, params_.bin_theta);
+  std::vector<Particle> next;
+  next.reserve(std::min<size_t>(m_max, 4 * particles_.size() + m_min));
+  double m_x = 0, w_sum = 0, log_max = -1e300;
+  int drawn = 0;
+  // Algorithm 1 main loop, run until M >= max(M_x, M_min) (bounded by M_max).
+  for (int m = 0; m < m_max && (m < m_min || m < m_x); ++m) {
+    Particle p;
+    const bool random = inject > 0 && rng_.drawUniform(0.0, 1.0) < inject;
+    if (random) {
+      p.d = map_->sampleFreePose(rng_);
+    } else {
+      const double r = rng_.drawUniform(0.0, acc);
+      const size_t i = std::min<size_t>(
+          std::upper_bound(cumulative.begin(), cumulative.end(), r) - cumulative.begin(),
+          particles_.size() - 1);
+      p.d = sampleMotionModel(u, particles_[i].d, params_.motion, rng_);  // line 7
+    }
+    p.log_w = measurement_.logLikelihood(p.d);  // line 8
+    if (!random) {
+      w_sum += std::exp(p.log_w / (params_.measurement.likelihood_exponent * beams));
+      ++drawn;
+    }
+    log_max = std::max(log_max, p.log_w);
+    next.push_back(p);                                              // line 9
+    if (!fixed && bins.insert(p.d))                                 // lines 10-12
+      m_x = klBound(bins.count(), params_.epsilon, params_.delta);  // line 14
+  }
+  particles_.swap(next);
+  for (auto& p : particles_) p.log_w -= log_max;  // rescale before normalizing
+  // Short/long-term averages of the per-beam likelihood (geometric mean over beams).
+  if (drawn > 0 && params_.alpha_slow > 0) {
+    const double w_avg = w_sum / drawn;
+    if (w_slow_ == 0) {
+      w_slow_ = w_fast_ = w_avg;
+    } else {
+      w_slow_ += params_.alpha_slow * (w_avg - w_slow_);
+      w_fast_ += params_.alpha_fast * (w_avg - w_fast_);
+    }
+  }
+}
+
+void KldLocalizer::normalizeAndEstimate() {
+  double total = 0;
+  for (const auto& p : particles_) total += std::exp(p.log_w);  // line 20
+  const double log_total = std::log(total);
+  for (auto& p : particles_) p.log_w -= log_total;  // lines 21-23
+  estimate_ = estimateDominantCluster(particles_, params_.cluster_xy, params_.cluster_theta);
+}
+
+LocalizationStatus KldLocalizer::status() const {
+  LocalizationStatus s;
+  std::ostringstream why;
+  if (!initialized()) {
+    s.reason = "not initialized (no initial pose, no global localization)";
+    return s;
+  }
+  const double sxy = std::sqrt(std::max(estimate_.cov(0, 0), estimate_.cov(1, 1)));
+  const double sth = std::sqrt(estimate_.cov(2, 2));
+  if (pending_first_update_) {
+    why << "waiting for the first scan after initialization";
+  } else if (estimate_.cluster_weight < params_.localized_min_cluster_weight) {
+    why << estimate_.cluster_count << " pose hypotheses (best holds "
+        << static_cast<int>(100 * estimate_.cluster_weight) << " % of the weight)";
+  } else if (sxy > params_.localized_max_xy_std) {
+    why << "position uncertainty too large (sigma " << sxy << " m)";
+  } else if (sth > params_.localized_max_theta_std) {
+    why << "heading uncertainty too large (sigma " << sth * 180 / M_PI << " deg)";
+  } else if (w_slow_ > 0 && w_fast_ < params_.recovery_ratio * w_slow_) {
+    why << "scans no longer match the map (short/long-term likelihood " << w_fast_ / w_slow_ << ")";
+  }
+  s.reason = why.str();
+  s.localized = s.reason.empty();
+  return s;
+}
+
+}  // namespace wheelchair_kld

@@ -1,0 +1,126 @@
+#include <wheelchair_kld/localization_map.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace wheelchair_kld {
+
+namespace {
+constexpr float kOccupiedBelow = 0.35f;  // MRPT free-probability below which a cell is an obstacle
+constexpr float kFreeAbove = 0.65f;      // ... above which it is known free
+
+/// Exact 1-D squared Euclidean distance transform (Felzenszwalb & Huttenlocher 2012).
+void distanceTransform1D(const std::vector<double>& f, std::vector<double>& d, std::vector<int>& v,
+                         std::vector<double>& z) {
+  const int n = static_cast<int>(f.size());
+  const double inf = std::numeric_limits<double>::infinity();
+  int k = 0;
+  v[0] = 0;
+  z[0] = -inf;
+  z[1] = inf;
+  for (int q = 1; q < n; ++q) {
+    double s = ((f[q] + q * q) - (f[v[k]] + v[k] * v[k])) / (2.0 * (q - v[k]));
+    while (s <= z[k]) {
+      --k;
+      s = ((f[q] + q * q) - (f[v[k]] + v[k] * v[k])) / (2.0 * (q - v[k]));
+    }
+    ++k;
+    v[k] = q;
+    z[k] = s;
+    z[k + 1] = inf;
+  }
+  k = 0;
+  for (int q = 0; q < n; ++q) {
+    while (z[k + 1] < q) ++k;
+    d[q] = (q - v[k]) * (q - v[k]) + f[v[k]];
+  }
+}
+}  // namespace
+
+mrpt::maps::COccupancyGridMap2D toMrptGrid(const GridData& g) {
+  if (g.width <= 0 || g.height <= 0 || !(g.resolution > 0) ||
+      g.data.size() != static_cast<size_t>(g.width) * g.height)
+    throw std::invalid_argument("grid is empty or its data size does not match width x height");
+  mrpt::maps::COccupancyGridMap2D grid;
+  grid.setSize(g.origin_x, g.origin_x + g.width * g.resolution, g.origin_y,
+               g.origin_y + g.height * g.resolution, g.resolution, 0.5f);
+  const int sx = grid.getSizeX(), sy = grid.getSizeY();
+  for (int iy = 0; iy < std::min(sy, g.height); ++iy)
+    for (int ix = 0; ix < std::min(sx, g.width); ++ix) {
+      const int8_t v = g.data[static_cast<size_t>(iy) * g.width + ix];
+      grid.setCell(ix, iy, v < 0 ? 0.5f : 1.0f - std::min<int>(v, 100) / 100.0f);
+    }
+  return grid;
+}
+
+LocalizationMap::LocalizationMap(const mrpt::maps::COccupancyGridMap2D& grid, double max_distance)
+    : grid_(grid),
+      size_x_(grid.getSizeX()),
+      size_y_(grid.getSizeY()),
+      x_min_(grid.getXMin()),
+      y_min_(grid.getYMin()),
+      resolution_(grid.getResolution()),
+      inv_resolution_(1.0 / grid.getResolution()),
+      max_distance_(max_distance) {
+  if (size_x_ <= 0 || size_y_ <= 0) throw std::invalid_argument("empty grid map");
+  const size_t n = static_cast<size_t>(size_x_) * size_y_;
+  distance_.assign(n, 0.0f);
+  free_mask_.assign(n, 0);
+  const double big = 1e12;
+  std::vector<double> sq(n);
+  for (int iy = 0; iy < size_y_; ++iy)
+    for (int ix = 0; ix < size_x_; ++ix) {
+      const float p_free = grid_.getCell(ix, iy);
+      const size_t i = static_cast<size_t>(iy) * size_x_ + ix;
+      sq[i] = p_free < kOccupiedBelow ? 0.0 : big;
+      if (p_free > kFreeAbove) {
+        free_mask_[i] = 1;
+        free_cells_.push_back(static_cast<int>(i));
+      }
+    }
+  // Separable squared EDT: columns then rows.
+  const int m = std::max(size_x_, size_y_);
+  std::vector<double> f(m), d(m), z(m + 1);
+  std::vector<int> v(m);
+  for (int ix = 0; ix < size_x_; ++ix) {
+    f.resize(size_y_);
+    d.resize(size_y_);
+    for (int iy = 0; iy < size_y_; ++iy) f[iy] = sq[static_cast<size_t>(iy) * size_x_ + ix];
+    distanceTransform1D(f, d, v, z);
+    for (int iy = 0; iy < size_y_; ++iy) sq[static_cast<size_t>(iy) * size_x_ + ix] = d[iy];
+  }
+  f.resize(size_x_);
+  d.resize(size_x_);
+  for (int iy = 0; iy < size_y_; ++iy) {
+    std::copy_n(sq.begin() + static_cast<size_t>(iy) * size_x_, size_x_, f.begin());
+    distanceTransform1D(f, d, v, z);
+    for (int ix = 0; ix < size_x_; ++ix)
+      distance_[static_cast<size_t>(iy) * size_x_ + ix] =
+          static_cast<float>(std::min<double>(std::sqrt(d[ix]) * resolution_, max_distance_));
+  }
+}
+
+mrpt::math::TPose2D LocalizationMap::sampleFreePose(mrpt::random::CRandomGenerator& rng) const {
+  if (free_cells_.empty()) throw std::runtime_error("map has no free cells");
+  const int cell = free_cells_[rng.drawUniform32bit() % free_cells_.size()];
+  const int ix = cell % size_x_, iy = cell / size_x_;
+  return mrpt::math::TPose2D(x_min_ + (ix + rng.drawUniform(0.0, 1.0)) * resolution_,
+                             y_min_ + (iy + rng.drawUniform(0.0, 1.0)) * resolution_,
+                             rng.drawUniform(-M_PI, M_PI));
+}
+
+double LocalizationMap::castRay(double x, double y, double angle, double max_range) const {
+  const double step = 0.5 * resolution_;
+  const double c = std::cos(angle) * step, s = std::sin(angle) * step;
+  double r = 0;
+  for (; r < max_range; r += step, x += c, y += s) {
+    const int cell = cellIndex(x, y);
+    if (cell < 0) return max_range;
+    if (distance_[cell] == 0.0f) return r;
+  }
+  return max_range;
+}
+
+}  // namespace wheelchair_kld

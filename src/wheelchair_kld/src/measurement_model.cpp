@@ -1,0 +1,86 @@
+#include <wheelchair_kld/measurement_model.h>
+
+#include <cmath>
+
+namespace wheelchair_kld {
+
+namespace {
+double gaussian(double x, double sigma) {
+  return std::exp(-0.5 * x * x / (sigma * sigma)) / (sigma * std::sqrt(2 * M_PI));
+}
+}  // namespace
+
+MeasurementModel::MeasurementModel(const LocalizationMap& map, const MeasurementParams& params)
+    : map_(map), params_(params) {
+  const double rand = params_.z_rand / params_.max_range;
+  outside_log_ = std::log(rand);
+  const auto& dist = map_.obstacleDistance();
+  field_log_.resize(dist.size());
+  for (size_t i = 0; i < dist.size(); ++i)
+    field_log_[i] =
+        static_cast<float>(std::log(params_.z_hit * gaussian(dist[i], params_.sigma_hit) + rand));
+}
+
+int MeasurementModel::setScan(const LaserScan& scan) {
+  beams_.clear();
+  sensor_pose_ = scan.sensor_pose;
+  const double max_range = std::min(params_.max_range, scan.range_max);
+  const int step = std::max(1, params_.beam_step);
+  const double cs = std::cos(scan.sensor_pose.phi), sn = std::sin(scan.sensor_pose.phi);
+  for (size_t i = 0; i < scan.ranges.size(); i += step) {
+    const double r = scan.ranges[i];
+    if (std::isfinite(r) && r < scan.range_min) continue;
+    Beam b;
+    b.angle = scan.sensor_pose.phi + scan.angle_min + i * scan.angle_increment;
+    b.max_range = !std::isfinite(r) || r >= max_range;
+    b.range = b.max_range ? max_range : r;
+    const double lx = b.range * std::cos(scan.angle_min + i * scan.angle_increment);
+    const double ly = b.range * std::sin(scan.angle_min + i * scan.angle_increment);
+    b.end_x = scan.sensor_pose.x + cs * lx - sn * ly;
+    b.end_y = scan.sensor_pose.y + sn * lx + cs * ly;
+    beams_.push_back(b);
+  }
+  return beamCount();
+}
+
+double MeasurementModel::logLikelihood(const mrpt::math::TPose2D& pose) const {
+  const double log_p =
+      params_.type == MeasurementModelType::kBeam ? logBeamModel(pose) : logLikelihoodField(pose);
+  return params_.likelihood_exponent * log_p;
+}
+
+double MeasurementModel::logLikelihoodField(const mrpt::math::TPose2D& pose) const {
+  const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+  double sum = 0;
+  for (const Beam& b : beams_) {
+    if (b.max_range) continue;  // no echo carries no information in the likelihood field
+    const int cell =
+        map_.cellIndex(pose.x + c * b.end_x - s * b.end_y, pose.y + s * b.end_x + c * b.end_y);
+    sum += cell < 0 ? outside_log_ : field_log_[cell];
+  }
+  return sum;
+}
+
+double MeasurementModel::logBeamModel(const mrpt::math::TPose2D& pose) const {
+  const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+  const double ox = pose.x + c * sensor_pose_.x - s * sensor_pose_.y;
+  const double oy = pose.y + s * sensor_pose_.x + c * sensor_pose_.y;
+  const double max_range = params_.max_range;
+  double sum = 0;
+  for (const Beam& b : beams_) {
+    const double expected = map_.castRay(ox, oy, pose.phi + b.angle, max_range);
+    double p = params_.z_rand / max_range;
+    if (b.max_range) {
+      p += params_.z_max;
+    } else {
+      p += params_.z_hit * gaussian(b.range - expected, params_.sigma_hit);
+      if (b.range < expected)
+        p += params_.z_short * params_.lambda_short * std::exp(-params_.lambda_short * b.range) /
+             (1 - std::exp(-params_.lambda_short * expected));
+    }
+    sum += std::log(p);
+  }
+  return sum;
+}
+
+}  // namespace wheelchair_kld

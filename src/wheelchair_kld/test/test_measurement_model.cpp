@@ -1,0 +1,55 @@
+// Distance transform against brute force; both measurement models prefer the true pose.
+#include <gtest/gtest.h>
+#include <wheelchair_kld/measurement_model.h>
+#include <wheelchair_kld/synthetic_drive.h>
+
+#include <cmath>
+
+using mrpt::math::TPose2D;
+using namespace wheelchair_kld;
+
+TEST(LocalizationMap, DistanceTransformMatchesBruteForce) {
+  GridData g;
+  g.resolution = 0.1;
+  g.width = 37;
+  g.height = 23;
+  g.data.assign(g.width * g.height, 0);
+  const int occ[][2] = {{3, 4}, {30, 20}, {12, 12}, {13, 12}, {0, 22}};
+  for (auto& c : occ) g.data[c[1] * g.width + c[0]] = 100;
+  const LocalizationMap map(toMrptGrid(g), 10.0);
+  for (int iy = 0; iy < g.height; ++iy)
+    for (int ix = 0; ix < g.width; ++ix) {
+      double best = 1e9;
+      for (auto& c : occ) best = std::min(best, std::hypot(ix - c[0], iy - c[1]) * g.resolution);
+      ASSERT_NEAR(map.obstacleDistance()[iy * g.width + ix], best, 1e-4) << ix << "," << iy;
+    }
+}
+
+TEST(LocalizationMap, RejectsInconsistentGrid) {
+  GridData g;
+  g.width = 10;
+  g.height = 10;
+  g.data.assign(5, 0);
+  EXPECT_THROW(toMrptGrid(g), std::invalid_argument);
+}
+
+class MeasurementModelTest : public ::testing::TestWithParam<MeasurementModelType> {};
+
+TEST_P(MeasurementModelTest, TruePoseIsMoreLikelyThanOffsetPoses) {
+  const auto grid = makeBuiltinWorld("office");
+  const LocalizationMap map(grid, 2.0);
+  MeasurementParams p;
+  p.type = GetParam();
+  MeasurementModel model(map, p);
+  const TPose2D truth(4.0, 5.5, 0.2);
+  model.setScan(simulateScan(grid, truth, DriveParams(), 11));
+  EXPECT_EQ(model.beamCount(), 61);
+  const double at_truth = model.logLikelihood(truth);
+  for (const TPose2D off : {TPose2D(4.15, 5.5, 0.2), TPose2D(4.0, 5.35, 0.2),
+                            TPose2D(4.0, 5.5, 0.25), TPose2D(8.0, 5.5, 0.2)})
+    EXPECT_GT(at_truth, model.logLikelihood(off)) << off.asString();
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, MeasurementModelTest,
+                         ::testing::Values(MeasurementModelType::kLikelihoodField,
+                                           MeasurementModelType::kBeam));
