@@ -1,0 +1,22 @@
+// OccupancyMap <-> nav_msgs/OccupancyGrid (library wheelchair_mapping_ros).
+#pragma once
+
+#include <nav_msgs/MapMetaData.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <ros/time.h>
+#include <wheelchair_mapping/occupancy_map.h>
+
+#include <string>
+
+namespace wheelchair_mapping {
+
+nav_msgs::MapMetaData toMapMetaData(const OccupancyMap& map, const ros::Time& load_time);
+
+nav_msgs::OccupancyGrid toOccupancyGrid(const OccupancyMap& map, const std::string& frame_id,
+                                        const ros::Time& stamp);
+
+/// Throws std::invalid_argument when the message's data size differs from width x height or
+/// the resolution is not positive.
+OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg);
+
+}  // namespace wheelchair_mapping

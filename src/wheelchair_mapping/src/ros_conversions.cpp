@@ -1,0 +1,50 @@
+#include <wheelchair_mapping/ros_conversions.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace wheelchair_mapping {
+
+nav_msgs::MapMetaData toMapMetaData(const OccupancyMap& map, const ros::Time& load_time) {
+  nav_msgs::MapMetaData info;
+  info.map_load_time = load_time;
+  info.resolution = static_cast<float>(map.resolution);
+  info.width = static_cast<uint32_t>(map.width);
+  info.height = static_cast<uint32_t>(map.height);
+  info.origin.position.x = map.origin_x;
+  info.origin.position.y = map.origin_y;
+  info.origin.orientation.z = std::sin(map.origin_yaw / 2);
+  info.origin.orientation.w = std::cos(map.origin_yaw / 2);
+  return info;
+}
+
+nav_msgs::OccupancyGrid toOccupancyGrid(const OccupancyMap& map, const std::string& frame_id,
+                                        const ros::Time& stamp) {
+  nav_msgs::OccupancyGrid msg;
+  msg.header.frame_id = frame_id;
+  msg.header.stamp = stamp;
+  msg.info = toMapMetaData(map, stamp);
+  msg.data = map.data;
+  return msg;
+}
+
+OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg) {
+  if (msg.data.size() != static_cast<size_t>(msg.info.width) * msg.info.height) {
+    throw std::invalid_argument("OccupancyGrid data size differs from width x height");
+  }
+  if (!(msg.info.resolution > 0)) {
+    throw std::invalid_argument("OccupancyGrid resolution must be positive");
+  }
+  OccupancyMap map;
+  map.resolution = msg.info.resolution;
+  map.width = static_cast<int>(msg.info.width);
+  map.height = static_cast<int>(msg.info.height);
+  map.origin_x = msg.info.origin.position.x;
+  map.origin_y = msg.info.origin.position.y;
+  const auto& q = msg.info.origin.orientation;
+  map.origin_yaw = std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
+  map.data = msg.data;
+  return map;
+}
+
+}  // namespace wheelchair_mapping
