@@ -27,3 +27,9 @@ def read_cases(path):
             yield suite, case.get("name"), "skip", ""
         else:
             yield suite, case.get("name"), "pass", ""
+
+
+if __name__ == "__main__":  # junit.py OUT.xml SUITE CASE [FAILURE_MESSAGE]
+    import sys
+
+    write_junit(sys.argv[1], sys.argv[2], [(sys.argv[3], sys.argv[4] if len(sys.argv) > 4 and sys.argv[4] else None)])
