@@ -1,0 +1,38 @@
+// The harmonic-potential planner plugin (paper section 2.3, Algorithm 2).
+#pragma once
+
+#include <wheelchair_harmonic_planner/config_space.h>
+#include <wheelchair_harmonic_planner/global_planner.h>
+#include <wheelchair_harmonic_planner/gradient_descent.h>
+#include <wheelchair_harmonic_planner/harmonic_solver.h>
+
+#include <memory>
+#include <optional>
+
+namespace wheelchair_harmonic_planner {
+
+/// Reads inscribed_radius, min_clearance, clearance_band, band_conductance,
+/// unknown_is_obstacle from the parameters (defaults: ConfigSpaceParams()).
+ConfigSpaceParams configSpaceParams(const ParameterMap& params);
+
+class HarmonicPlanner : public GlobalPlanner {
+ public:
+  void initialize(const std::string& name, const wheelchair_mapping::OccupancyMap& map,
+                  const ParameterMap& params) override;
+  bool makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
+                PlanCertificate& certificate) override;
+
+  /// The last solved potential (log u), e.g. for publishing; null before the first plan.
+  const HarmonicSolution* solution() const { return solution_ ? &*solution_ : nullptr; }
+  const ConfigSpace* configSpace() const { return cspace_.get(); }
+
+ private:
+  std::string name_;
+  std::unique_ptr<ConfigSpace> cspace_;
+  HarmonicSolverParams solver_params_;
+  DescentParams descent_params_;
+  std::optional<HarmonicSolution> solution_;  ///< kept as warm start for the same goal cell
+  bool solution_current_ = false;             ///< solved on the current map
+};
+
+}  // namespace wheelchair_harmonic_planner

@@ -1,0 +1,58 @@
+// The paper's boundary problem (section 2.3, Algorithm 2): Laplace's equation on the free
+// C-space with obstacles held at 1 and the goal at 0. We solve for u = 1 - phi (obstacles 0,
+// goal 1) and keep it as log u (Wray et al., IROS 2016), so that the exponentially small values
+// far down long corridors keep full relative precision and their gradient never underflows.
+#pragma once
+
+#include <wheelchair_harmonic_planner/config_space.h>
+
+#include <limits>
+#include <vector>
+
+namespace wheelchair_harmonic_planner {
+
+struct HarmonicSolverParams {
+  /// Convergence: max over free cells of the relative residual
+  /// |sum_j w_ij u_j / sum_j w_ij - u_i| / u_i  (= |Delta log u| of one Jacobi step).
+  double tolerance = 1e-5;
+  int max_iterations = 20000;   ///< SOR sweeps
+  double omega = 0.0;           ///< SOR factor; 0 = estimated from the widest free region
+  int sweeps_per_rescale = 8;   ///< linear sweeps between two re-scalings of the log field
+  bool use_conductance = true;  ///< false: plain Laplace (the paper's equation everywhere)
+};
+
+struct HarmonicSolution {
+  int width = 0;
+  int height = 0;
+  int goal_ix = -1;
+  int goal_iy = -1;
+  /// log u per cell: 0 at the goal, -infinity at obstacles and cells not connected to the goal.
+  std::vector<double> log_u;
+  int iterations = 0;
+  double residual = std::numeric_limits<double>::infinity();
+  double omega = 1.0;
+  bool converged = false;
+  bool warm_started = false;
+
+  double at(int ix, int iy) const { return log_u[static_cast<size_t>(iy) * width + ix]; }
+  bool reachable(int ix, int iy) const;
+};
+
+/// Solves for the goal cell. `warm_start` (same grid, e.g. the previous solution for this goal
+/// on the previous map) is used as the initial guess where it is finite. The goal must be a
+/// free cell (checked: throws std::invalid_argument otherwise).
+HarmonicSolution solveHarmonic(const ConfigSpace& cspace, int goal_ix, int goal_iy,
+                               const HarmonicSolverParams& params,
+                               const HarmonicSolution* warm_start = nullptr);
+
+/// The paper's method, for comparison: plain Jacobi on phi (obstacles 1, goal 0), linear
+/// space, stopping when max |Delta phi| < tolerance. Returns phi per cell.
+struct JacobiResult {
+  std::vector<double> phi;
+  int iterations = 0;
+  bool converged = false;
+};
+JacobiResult solvePaperJacobi(const ConfigSpace& cspace, int goal_ix, int goal_iy, double tolerance,
+                              int max_iterations);
+
+}  // namespace wheelchair_harmonic_planner

@@ -1,0 +1,30 @@
+// A sampling-based planner plugin on the same hard C-space as the harmonic planner, for
+// comparison: OMPL's RRTConnect, RRT*, PRM* or BIT* (parameter `planner`), with a time limit
+// and OMPL's path simplification.
+#pragma once
+
+#include <wheelchair_harmonic_planner/config_space.h>
+#include <wheelchair_harmonic_planner/global_planner.h>
+
+#include <memory>
+
+namespace wheelchair_harmonic_planner {
+
+class OmplPlanner : public GlobalPlanner {
+ public:
+  /// Parameters: planner (RRTConnect | RRTstar | PRMstar | BITstar), time_limit [s],
+  /// simplify (bool), seed, plus the C-space parameters of configSpaceParams().
+  void initialize(const std::string& name, const wheelchair_mapping::OccupancyMap& map,
+                  const ParameterMap& params) override;
+  bool makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
+                PlanCertificate& certificate) override;
+
+ private:
+  std::string name_;
+  std::string planner_type_ = "RRTConnect";
+  double time_limit_ = 1.0;
+  bool simplify_ = true;
+  std::unique_ptr<ConfigSpace> cspace_;
+};
+
+}  // namespace wheelchair_harmonic_planner

@@ -1,0 +1,40 @@
+// Poses, plans and the plan certificate shared by every planner of this package (ROS-free).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace wheelchair_harmonic_planner {
+
+/// A planar pose in the map frame [m, m, rad].
+struct Pose2D {
+  double x = 0.0;
+  double y = 0.0;
+  double yaw = 0.0;
+};
+
+/// What a plan proves about itself (issue 7): filled by every planner, published with the path.
+struct PlanCertificate {
+  bool success = false;
+  std::string planner;         ///< plugin name, e.g. "HarmonicPlanner" or "OmplPlanner/RRTstar"
+  std::string failure_reason;  ///< empty on success; one line naming the cause otherwise
+  // Solver (harmonic planner only; zero for sampling planners).
+  int solver_iterations = 0;
+  double solver_residual = 0.0;  ///< max relative residual of the discrete Laplace equation
+  bool solver_converged = false;
+  bool warm_started = false;
+  // Descent (harmonic planner only).
+  bool descent_reached_goal = false;
+  int plateau_steps = 0;      ///< descent steps whose potential did not improve
+  double min_gradient = 0.0;  ///< smallest |grad log u| along the path [1/m]
+  // Path quality.
+  double length = 0.0;         ///< [m]
+  double max_curvature = 0.0;  ///< [1/m], from consecutive headings
+  double min_clearance = 0.0;  ///< distance beyond the inscribed circle to the nearest obstacle [m]
+  double min_clearance_x = 0.0;  ///< where the minimum clearance occurs [m]
+  double min_clearance_y = 0.0;
+  std::vector<double> clearance;  ///< clearance profile, one value per plan pose [m]
+  double planning_time = 0.0;     ///< wall time of makePlan [s]
+};
+
+}  // namespace wheelchair_harmonic_planner

@@ -1,0 +1,129 @@
+// The solver returns the harmonic function of the paper's boundary problem: compared with the
+// exact solution of a one-cell strip (closed form) and with a direct sparse solve of the same
+// discrete Laplace equation on small 2-D grids.
+#include <wheelchair_harmonic_planner/harmonic_solver.h>
+#include <wheelchair_harmonic_planner/maze.h>
+
+#include <gtest/gtest.h>
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+
+#include <cmath>
+#include <random>
+
+using namespace wheelchair_harmonic_planner;
+using wheelchair_mapping::OccupancyMap;
+
+namespace {
+
+/// C-space equal to the map's free cells and plain Laplace (sigma = 1).
+ConfigSpaceParams pointRobot() {
+  ConfigSpaceParams p;
+  p.inscribed_radius = 0.0;
+  p.min_clearance = 0.0;
+  p.clearance_band = 0.0;
+  return p;
+}
+
+double logSinh(double z) { return z + std::log1p(-std::exp(-2.0 * z)) - std::log(2.0); }
+
+}  // namespace
+
+// A strip one cell wide: u_i = (u_{i-1} + u_{i+1}) / 4 with u_0 = 1 (goal) and u_N = 0 (dead
+// end), so u_i = sinh(mu (N - i)) / sinh(mu N) with cosh(mu) = 2. N = 4000 cells (200 m at 5 cm)
+// makes u fall to e^-5268, far below the smallest double.
+TEST(HarmonicExact, OneCellStripMatchesClosedFormFarBelowDoublePrecision) {
+  const int n = 4000;
+  OccupancyMap m = makeCorridor(n * 0.05, 0.05, 0.05, 2);
+  const ConfigSpace cs(m, pointRobot());
+  HarmonicSolverParams sp;
+  sp.tolerance = 1e-9;
+  const HarmonicSolution s = solveHarmonic(cs, 2, 2, sp);
+  ASSERT_TRUE(s.converged) << "residual " << s.residual;
+  const double mu = std::acosh(2.0);
+  for (int i = 1; i < n; ++i) {
+    const double exact = logSinh(mu * (n - i)) - logSinh(mu * n);
+    ASSERT_NEAR(s.at(2 + i, 2), exact, 1e-6 * std::max(1.0, std::abs(exact))) << "cell " << i;
+  }
+  EXPECT_LT(s.at(2 + n - 1, 2), -5000.0);
+}
+
+// Random obstacles on a 30 x 30 grid: the same discrete equation solved directly (sparse LU on
+// u, which is well inside double range on a grid this small).
+TEST(HarmonicExact, MatchesDirectSparseSolveOnRandomGrids) {
+  for (uint32_t seed = 1; seed <= 3; ++seed) {
+    std::mt19937 rng(seed);
+    OccupancyMap m = makeCorridor(1.4, 1.4, 0.05, 1);  // 30 x 30 with a wall ring
+    std::bernoulli_distribution blocked(0.2);
+    for (int iy = 1; iy < 29; ++iy)
+      for (int ix = 1; ix < 29; ++ix)
+        if (blocked(rng)) m.at(ix, iy) = wheelchair_mapping::kOccupied;
+    m.at(15, 15) = wheelchair_mapping::kFree;
+    const ConfigSpace cs(m, pointRobot());
+    HarmonicSolverParams sp;
+    sp.tolerance = 1e-10;
+    const HarmonicSolution s = solveHarmonic(cs, 15, 15, sp);
+    ASSERT_TRUE(s.converged);
+
+    // Direct solve: for each free cell except the goal, 4 u_k - sum(free neighbours) = [goal].
+    std::vector<int> id(900, -1);
+    int count = 0;
+    for (int k = 0; k < 900; ++k)
+      if (cs.freeMask()[k]) id[k] = count++;
+    std::vector<Eigen::Triplet<double>> t;
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(count);
+    const int goal = 15 * 30 + 15;
+    for (int k = 0; k < 900; ++k) {
+      if (id[k] < 0) continue;
+      t.emplace_back(id[k], id[k], k == goal ? 1.0 : 4.0);
+      if (k == goal) {
+        b[id[k]] = 1.0;
+        continue;
+      }
+      for (const int off : {1, -1, 30, -30})
+        if (id[k + off] >= 0) t.emplace_back(id[k], id[k + off], -1.0);
+    }
+    Eigen::SparseMatrix<double> a(count, count);
+    a.setFromTriplets(t.begin(), t.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(a);
+    const Eigen::VectorXd u = lu.solve(b);
+    for (int k = 0; k < 900; ++k) {
+      if (id[k] < 0) continue;
+      if (u[id[k]] < 1e-300) {
+        EXPECT_FALSE(std::isfinite(s.log_u[k])) << "cell " << k << " is cut off from the goal";
+      } else {
+        EXPECT_NEAR(s.log_u[k], std::log(u[id[k]]), 1e-6) << "seed " << seed << " cell " << k;
+      }
+    }
+  }
+}
+
+TEST(HarmonicExact, WarmStartConvergesFasterToTheSameSolution) {
+  OccupancyMap m = makeMaze(200, 8, 2, 7);
+  ConfigSpaceParams p = pointRobot();
+  HarmonicSolverParams sp;
+  sp.tolerance = 1e-8;
+  const HarmonicSolution cold = solveHarmonic(ConfigSpace(m, p), 6, 6, sp);
+  ASSERT_TRUE(cold.converged);
+  // Close one passage far from the goal (a small map change) and re-solve.
+  for (int iy = 150; iy < 160; ++iy)
+    for (int ix = 150; ix < 160; ++ix) m.at(ix, iy) = wheelchair_mapping::kOccupied;
+  const ConfigSpace changed(m, p);
+  const HarmonicSolution warm = solveHarmonic(changed, 6, 6, sp, &cold);
+  const HarmonicSolution fresh = solveHarmonic(changed, 6, 6, sp);
+  ASSERT_TRUE(warm.converged && fresh.converged);
+  EXPECT_TRUE(warm.warm_started);
+  EXPECT_LT(warm.iterations, fresh.iterations);
+  for (size_t k = 0; k < fresh.log_u.size(); ++k) {
+    if (std::isfinite(fresh.log_u[k])) {
+      ASSERT_NEAR(warm.log_u[k], fresh.log_u[k], 1e-4 * std::max(1.0, std::abs(fresh.log_u[k])));
+    } else {
+      ASSERT_FALSE(std::isfinite(warm.log_u[k]));
+    }
+  }
+}
+
+TEST(HarmonicExact, GoalInObstacleIsRejected) {
+  const ConfigSpace cs(makeCorridor(1.0, 0.5, 0.05), pointRobot());
+  EXPECT_THROW(solveHarmonic(cs, 0, 0, HarmonicSolverParams()), std::invalid_argument);
+}
