@@ -1,0 +1,33 @@
+// The inverse sensor model of a laser beam and the paper's Bayes update (eq. 1).
+#pragma once
+
+#include <string>
+
+namespace wheelchair_mapping {
+
+/// Eq. (1) (Elfes 1989): the new occupancy probability of a cell from the sensor model's
+/// P_s^o (probability the cell is occupied given the reading) and the stored P_m^o.
+double elfesUpdate(double p_sensor, double p_prior);
+
+/// What one beam says about the cells it crosses. MRPT stores cells as 8-bit log-odds
+/// (steps of 1/16), so the probabilities actually applied are the quantized ones returned by
+/// the effective*() helpers of BayesMapper.
+struct InverseSensorModel {
+  double p_occ_hit = 0.7;    ///< P_s^o of the cell where the beam ended (a return)
+  double p_occ_pass = 0.35;  ///< P_s^o of each cell the beam passed through
+  /// Cells farther than this from the sensor are never updated; a return beyond it counts
+  /// as a pass-through up to this range [m].
+  double max_insertion_range = 20.0;
+  /// REP-117 +inf (no return within range_max): the beam's cells are free up to
+  /// no_return_range (<= 0: the scan's range_max), if enabled.
+  bool no_return_is_free = true;
+  double no_return_range = 0.0;
+  /// Angular width of a beam [rad]; > 0 marks every cell across the beam's footprint at the
+  /// return as occupied (0: one cell per return).
+  double beam_width = 0.0;
+
+  /// Empty if consistent, else the reason (probabilities in (0,1), hit > 0.5 > pass, ...).
+  std::string problem() const;
+};
+
+}  // namespace wheelchair_mapping

@@ -1,0 +1,150 @@
+#include <wheelchair_mapping/bayes_mapper.h>
+#include <wheelchair_mapping/ray_trace.h>
+#include <wheelchair_mapping/scan_checks.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace wheelchair_mapping {
+namespace {
+
+using Grid = mrpt::maps::COccupancyGridMap2D;
+using LogOdds = mrpt::maps::CLogOddsGridMap2D<Grid::cellType>;
+
+/// MRPT's cells hold round(16 ln(p / (1 - p))) (CLogOddsGridMapLUT's LOGODD_K). Its own p2l()
+/// first truncates p to a multiple of 1/127, so the conversion is done here, more precisely.
+constexpr double kLogOddsScale = 16.0;
+
+Grid::cellType toCellLogOdds(double p) {
+  const long l = std::lround(kLogOddsScale * std::log(p / (1.0 - p)));
+  return static_cast<Grid::cellType>(
+      std::clamp<long>(l, Grid::OCCGRID_CELLTYPE_MIN, Grid::OCCGRID_CELLTYPE_MAX));
+}
+
+}  // namespace
+
+BayesMapper::BayesMapper(const MapperConfig& config) : config_(config) {
+  const std::string problem = config.model.problem();
+  if (!problem.empty()) throw std::invalid_argument("mapper: " + problem);
+  if (!(config.resolution > 0) || !(config.initial_size > 0) || !(config.growth_margin >= 0)) {
+    throw std::invalid_argument("mapper: resolution, initial_size must be positive");
+  }
+  const auto half = static_cast<float>(config.initial_size / 2);
+  grid_.setSize(-half, half, -half, half, static_cast<float>(config.resolution), 0.5f);
+  // MRPT cells hold log-odds of being free: an occupied reading subtracts, a free one adds.
+  logodds_hit_ = toCellLogOdds(config.model.p_occ_hit);
+  logodds_pass_ = toCellLogOdds(1.0 - config.model.p_occ_pass);
+}
+
+double BayesMapper::effectiveHitProbability() const { return 1.0 - Grid::l2p(-logodds_hit_); }
+
+double BayesMapper::effectivePassProbability() const { return 1.0 - Grid::l2p(logodds_pass_); }
+
+OccupancyMap BayesMapper::map(const GridThresholds& thresholds) const {
+  return fromMrptGrid(grid_, thresholds);
+}
+
+void BayesMapper::markFree(int ix, int iy) {
+  LogOdds::updateCell_fast_free(ix, iy, logodds_pass_, Grid::OCCGRID_CELLTYPE_MAX - logodds_pass_,
+                                grid_.getRow(0), grid_.getSizeX());
+}
+
+void BayesMapper::markOccupied(int ix, int iy) {
+  LogOdds::updateCell_fast_occupied(ix, iy, logodds_hit_, Grid::OCCGRID_CELLTYPE_MIN + logodds_hit_,
+                                    grid_.getRow(0), grid_.getSizeX());
+}
+
+void BayesMapper::growToFit(double x_min, double x_max, double y_min, double y_max) {
+  if (x_min >= grid_.getXMin() && x_max < grid_.getXMax() && y_min >= grid_.getYMin() &&
+      y_max < grid_.getYMax()) {
+    return;
+  }
+  const double m = config_.growth_margin;
+  grid_.resizeGrid(static_cast<float>(std::min<double>(x_min - m, grid_.getXMin())),
+                   static_cast<float>(std::max<double>(x_max + m, grid_.getXMax())),
+                   static_cast<float>(std::min<double>(y_min - m, grid_.getYMin())),
+                   static_cast<float>(std::max<double>(y_max + m, grid_.getYMax())), 0.5f, false);
+}
+
+// Cells across the beam's footprint at the return, one per half cell along the arc.
+void BayesMapper::markFootprint(const Pose2D& pose, double angle, double range) {
+  const double half_width = range * std::tan(config_.model.beam_width / 2);
+  const double res = grid_.getResolution();
+  const int steps = static_cast<int>(std::ceil(half_width / (res / 2)));
+  int last_ix = -1, last_iy = -1;
+  for (int k = -steps; k <= steps; ++k) {
+    const double a = angle + (steps > 0 ? k * config_.model.beam_width / 2 / steps : 0.0);
+    const int ix = grid_.x2idx(pose.x + range * std::cos(a));
+    const int iy = grid_.y2idx(pose.y + range * std::sin(a));
+    if ((ix != last_ix || iy != last_iy) && ix >= 0 && iy >= 0 &&
+        ix < static_cast<int>(grid_.getSizeX()) && iy < static_cast<int>(grid_.getSizeY())) {
+      markOccupied(ix, iy);
+    }
+    last_ix = ix;
+    last_iy = iy;
+  }
+}
+
+InsertResult BayesMapper::insert(const LaserScan2D& scan, const Pose2D& pose) {
+  InsertResult result;
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw)) {
+    result.reason = "sensor pose is not finite";
+    return result;
+  }
+  result.reason = scanProblem(scan, config_.expected_beams);
+  if (!result.reason.empty()) return result;
+  if (scan.stamp < last_stamp_) {
+    std::ostringstream msg;
+    msg.precision(15);
+    msg << "time went backwards: scan at " << scan.stamp << " s after one at " << last_stamp_
+        << " s";
+    result.reason = msg.str();
+    return result;
+  }
+  // Beam endpoints first: the grid must contain them all before any cell is touched.
+  std::vector<BeamUse> uses(scan.ranges.size());
+  double x_min = pose.x, x_max = pose.x, y_min = pose.y, y_max = pose.y;
+  for (size_t i = 0; i < uses.size(); ++i) {
+    uses[i] = useOfBeam(scan.ranges[i], scan, config_.model);
+    if (uses[i].kind == BeamUse::kSkip) continue;
+    ++result.beams_used;
+    const double a = pose.yaw + scan.angle_min + i * scan.angle_increment;
+    const double reach = uses[i].length * (1 + std::tan(config_.model.beam_width / 2));
+    x_min = std::min(x_min, pose.x + reach * std::cos(a));
+    x_max = std::max(x_max, pose.x + reach * std::cos(a));
+    y_min = std::min(y_min, pose.y + reach * std::sin(a));
+    y_max = std::max(y_max, pose.y + reach * std::sin(a));
+  }
+  if (result.beams_used == 0) {
+    result.reason = "no usable beam (all NaN, -inf or out of range)";
+    return result;
+  }
+  growToFit(x_min, x_max, y_min, y_max);
+  const double res = grid_.getResolution();
+  const double gx0 = (pose.x - grid_.getXMin()) / res;
+  const double gy0 = (pose.y - grid_.getYMin()) / res;
+  for (size_t i = 0; i < uses.size(); ++i) {
+    if (uses[i].kind == BeamUse::kSkip) continue;
+    const double a = pose.yaw + scan.angle_min + i * scan.angle_increment;
+    const double gx1 = gx0 + uses[i].length * std::cos(a) / res;
+    const double gy1 = gy0 + uses[i].length * std::sin(a) / res;
+    const bool hit = uses[i].kind == BeamUse::kHit;
+    traceCells(gx0, gy0, gx1, gy1, [&](int ix, int iy, bool last) {
+      if (!(hit && last)) markFree(ix, iy);
+    });
+    if (hit && config_.model.beam_width > 0) {
+      markFootprint(pose, a, uses[i].length);
+    } else if (hit) {
+      markOccupied(static_cast<int>(std::floor(gx1)), static_cast<int>(std::floor(gy1)));
+    }
+  }
+  last_stamp_ = scan.stamp;
+  ++scans_inserted_;
+  result.inserted = true;
+  return result;
+}
+
+}  // namespace wheelchair_mapping

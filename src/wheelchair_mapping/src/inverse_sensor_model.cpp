@@ -1,0 +1,24 @@
+#include <wheelchair_mapping/inverse_sensor_model.h>
+
+#include <cmath>
+
+namespace wheelchair_mapping {
+
+// Eq. (1): P^o = P_s^o P_m^o / (P_s^o P_m^o + (1 - P_s^o)(1 - P_m^o)).
+double elfesUpdate(double p_sensor, double p_prior) {
+  const double occupied = p_sensor * p_prior;
+  return occupied / (occupied + (1.0 - p_sensor) * (1.0 - p_prior));
+}
+
+std::string InverseSensorModel::problem() const {
+  if (!(p_occ_hit > 0.5 && p_occ_hit < 1.0)) return "p_occ_hit must be in (0.5, 1)";
+  if (!(p_occ_pass > 0.0 && p_occ_pass < 0.5)) return "p_occ_pass must be in (0, 0.5)";
+  if (!(max_insertion_range > 0.0) || !std::isfinite(max_insertion_range)) {
+    return "max_insertion_range must be positive and finite";
+  }
+  if (!std::isfinite(no_return_range)) return "no_return_range must be finite";
+  if (!(beam_width >= 0.0 && beam_width < 0.5)) return "beam_width must be in [0, 0.5) rad";
+  return "";
+}
+
+}  // namespace wheelchair_mapping

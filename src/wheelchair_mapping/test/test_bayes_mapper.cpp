@@ -1,0 +1,145 @@
+// Scan insertion: REP-117 range conventions, any beam geometry, skipped scans, grid growth.
+#include <gtest/gtest.h>
+#include <wheelchair_mapping/bayes_mapper.h>
+
+#include <cmath>
+
+namespace wheelchair_mapping {
+namespace {
+
+LaserScan2D fan(double angle_min, double angle_increment, const std::vector<float>& ranges,
+                double stamp = 1.0) {
+  LaserScan2D scan;
+  scan.stamp = stamp;
+  scan.angle_min = angle_min;
+  scan.angle_increment = angle_increment;
+  scan.angle_max = angle_min + (ranges.size() - 1) * angle_increment;
+  scan.range_min = 0.2;
+  scan.range_max = 8.0;
+  scan.ranges = ranges;
+  return scan;
+}
+
+double occ(const BayesMapper& m, double x, double y) {
+  return 1.0 - m.grid().getPos(static_cast<float>(x), static_cast<float>(y));
+}
+
+const Pose2D kOrigin{0.025, 0.025, 0.0};
+
+TEST(BayesMapper, HitMarksFreeThenOccupied) {
+  BayesMapper m(MapperConfig{});
+  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {3.0f}), kOrigin).inserted);
+  EXPECT_LT(occ(m, 1.5, 0.025), 0.5);
+  EXPECT_GT(occ(m, 3.03, 0.025), 0.5);
+  EXPECT_EQ(occ(m, 3.5, 0.025), 0.5) << "behind the return nothing is known";
+}
+
+TEST(BayesMapper, PlusInfinityIsFreeUpToRangeMaxAndConfigurable) {
+  BayesMapper m(MapperConfig{});
+  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {INFINITY}), kOrigin).inserted);
+  EXPECT_LT(occ(m, 7.9, 0.025), 0.5);
+  EXPECT_EQ(occ(m, 8.2, 0.025), 0.5);
+  MapperConfig shorter;
+  shorter.model.no_return_range = 4.0;
+  BayesMapper m2(shorter);
+  ASSERT_TRUE(m2.insert(fan(0.0, 0.1, {INFINITY}), kOrigin).inserted);
+  EXPECT_LT(occ(m2, 3.9, 0.025), 0.5);
+  EXPECT_EQ(occ(m2, 4.2, 0.025), 0.5);
+  MapperConfig off;
+  off.model.no_return_is_free = false;
+  BayesMapper m3(off);
+  const auto r = m3.insert(fan(0.0, 0.1, {INFINITY}), kOrigin);
+  EXPECT_FALSE(r.inserted);
+  EXPECT_EQ(occ(m3, 1.0, 0.025), 0.5);
+}
+
+TEST(BayesMapper, NanMinusInfAndOutOfRangeBeamsAreSkipped) {
+  BayesMapper m(MapperConfig{});
+  // Beams at 0, 90, 180, 270 degrees; only the last one (2 m) is usable.
+  const auto r =
+      m.insert(fan(0.0, M_PI / 2, {NAN, -INFINITY, 0.1f /* < range_min */, 2.0f}), kOrigin);
+  ASSERT_TRUE(r.inserted);
+  EXPECT_EQ(r.beams_used, 1);
+  EXPECT_EQ(occ(m, 1.0, 0.025), 0.5);
+  EXPECT_EQ(occ(m, 0.025, 1.0), 0.5);
+  EXPECT_EQ(occ(m, -1.0, 0.025), 0.5);
+  EXPECT_LT(occ(m, 0.025, -1.0), 0.5);
+  EXPECT_FALSE(m.insert(fan(0.0, 0.1, {9.0f /* > range_max */}, 2.0), kOrigin).inserted);
+}
+
+TEST(BayesMapper, AsymmetricFieldOfViewAndClockwiseScanners) {
+  BayesMapper m(MapperConfig{});
+  // Clockwise: ranges[0] at +90 deg, ranges[2] at -90 deg; the sensor faces +y (yaw 90 deg).
+  const Pose2D pose{0.025, 0.025, M_PI / 2};
+  ASSERT_TRUE(m.insert(fan(M_PI / 2, -M_PI / 2, {1.0f, 2.0f, 3.0f}), pose).inserted);
+  EXPECT_GT(occ(m, -0.975, 0.025), 0.5);  // +90 deg from +y is -x
+  EXPECT_GT(occ(m, 0.025, 2.025), 0.5);   // straight ahead
+  EXPECT_GT(occ(m, 3.025, 0.025), 0.5);   // -90 deg from +y is +x
+}
+
+TEST(BayesMapper, SkipsBadScansWithAReasonAndLeavesTheGridUntouched) {
+  MapperConfig config;
+  config.expected_beams = 361;
+  BayesMapper m(config);
+  std::vector<float> good(361, 3.0f);
+  ASSERT_TRUE(m.insert(fan(-M_PI / 2, M_PI / 360, good, 10.0), kOrigin).inserted);
+  const auto before = m.grid().getRawMap();
+  struct Case {
+    LaserScan2D scan;
+    Pose2D pose;
+    std::string reason;
+  };
+  std::vector<Case> cases;
+  cases.push_back({fan(-M_PI / 2, M_PI / 359, std::vector<float>(360, 3.0f), 11.0), kOrigin,
+                   "wrong beam count"});
+  LaserScan2D lying = fan(-M_PI / 2, M_PI / 360, good, 11.0);
+  lying.angle_max = 0.3;  // angles say fewer beams than there are ranges
+  cases.push_back({lying, kOrigin, "wrong beam count"});
+  cases.push_back(
+      {fan(-M_PI / 2, M_PI / 360, std::vector<float>(361, NAN), 11.0), kOrigin, "no usable beam"});
+  cases.push_back({fan(-M_PI / 2, M_PI / 360, good, 9.5), kOrigin, "time went backwards"});
+  cases.push_back({fan(-M_PI / 2, M_PI / 360, good, 11.0), Pose2D{NAN, 0, 0}, "not finite"});
+  cases.push_back({fan(-M_PI / 2, 0.0, good, 11.0), kOrigin, "increment is zero"});
+  for (const auto& c : cases) {
+    const auto r = m.insert(c.scan, c.pose);
+    EXPECT_FALSE(r.inserted) << c.reason;
+    EXPECT_NE(r.reason.find(c.reason), std::string::npos) << r.reason;
+  }
+  EXPECT_EQ(m.grid().getRawMap(), before);
+  EXPECT_EQ(m.scansInserted(), 1u);
+}
+
+TEST(BayesMapper, GrowsToFitScansAndKeepsWhatItHad) {
+  MapperConfig config;
+  config.initial_size = 4.0;
+  BayesMapper m(config);
+  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {1.0f}), kOrigin).inserted);
+  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {7.0f}, 2.0), Pose2D{20.025, -30.025, M_PI}).inserted);
+  EXPECT_GT(occ(m, 1.03, 0.025), 0.5);
+  EXPECT_GT(occ(m, 13.03, -30.025), 0.5);
+  EXPECT_LE(m.grid().getXMin(), 0.0f);
+  EXPECT_LE(m.grid().getYMin(), -30.1f);
+}
+
+TEST(BayesMapper, ReturnsBeyondTheInsertionRangeOnlyClearSpace) {
+  MapperConfig config;
+  config.model.max_insertion_range = 2.0;
+  BayesMapper m(config);
+  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {5.0f}), kOrigin).inserted);
+  EXPECT_LT(occ(m, 1.9, 0.025), 0.5);
+  EXPECT_EQ(occ(m, 2.2, 0.025), 0.5);
+  EXPECT_EQ(occ(m, 5.03, 0.025), 0.5);
+}
+
+TEST(BayesMapper, BeamWidthMarksTheFootprintAcrossTheBeam) {
+  MapperConfig config;
+  config.model.beam_width = 0.1;  // 0.4 m wide at 4 m
+  BayesMapper m(config);
+  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {4.0f}), kOrigin).inserted);
+  EXPECT_GT(occ(m, 4.0, 0.15), 0.5);
+  EXPECT_GT(occ(m, 4.0, -0.1), 0.5);
+  EXPECT_EQ(occ(m, 4.0, 0.4), 0.5);
+}
+
+}  // namespace
+}  // namespace wheelchair_mapping
