@@ -1,0 +1,95 @@
+// The safety supervisor: watches localization, the laser, tf, the path ahead and the base
+// driver, and demands a stop (controlled deceleration, then the brake) with a reason the
+// rider and the carers can read. A stop latches: the chair moves again only on a new command
+// from the rider. ROS-free; time is injected (seconds, any epoch).
+#pragma once
+
+#include <wheelchair_mapping/occupancy_map.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace wheelchair_safety {
+
+struct SafetyLimits {
+  double scan_timeout = 0.3;          ///< [s] laser silent this long -> stop
+  double pose_timeout = 0.3;          ///< [s] map->base_link (tf) older than this -> stop
+  double localization_timeout = 1.0;  ///< [s] no localization status this long -> stop
+  double max_position_std = 0.20;     ///< [m] largest std-dev of the x-y covariance
+  double max_heading_std = 0.20;      ///< [rad]
+  double stop_distance = 1.2;         ///< [m] watched along the path ahead of the chair
+  double corridor_half_width = 0.41;  ///< [m] chair half-width + 10 cm either side of the path
+  double map_tolerance = 0.15;        ///< [m] a return this close to a mapped obstacle is the map
+  int min_obstacle_returns = 3;       ///< returns needed to call an obstacle (noise rejection)
+};
+
+enum class StopReason {
+  kNone,
+  kNoData,
+  kLocalizationLost,
+  kCovarianceTooLarge,
+  kLaserSilent,
+  kPoseStale,
+  kUnexpectedObstacle,
+  kDriverFault,
+  kUserStop,
+};
+
+/// Words for the rider's screen and the log.
+const char* describe(StopReason reason);
+
+struct SafetyVerdict {
+  bool stop = false;
+  StopReason reason = StopReason::kNone;
+  std::string detail;  ///< e.g. "no laser scan for 0.52 s"
+};
+
+class SafetySupervisor {
+ public:
+  explicit SafetySupervisor(SafetyLimits limits = SafetyLimits());
+
+  void onMap(const wheelchair_mapping::OccupancyMap& map);
+  /// The path being driven, in the map frame (empty: nothing ahead to watch).
+  void onPath(std::vector<Eigen::Vector2d> path);
+  /// Localizer status: `localized` and the pose covariance (x, y, theta) in the map frame.
+  void onLocalization(double stamp, bool localized, const Eigen::Matrix3d& covariance,
+                      const std::string& why_not);
+  /// The chair's pose (tf map -> base_link) and when it was valid.
+  void onPose(double stamp, const Eigen::Vector3d& pose);
+  /// A laser scan's returns, already in the map frame; non-finite points are ignored.
+  void onScan(double stamp, const std::vector<Eigen::Vector2d>& returns_in_map);
+  void onDriverStatus(double stamp, bool fault, const std::string& detail);
+  void onUserStop(double stamp);
+  /// A new command from the rider (a new goal): clears a latched stop. If a condition still
+  /// holds, the next check() stops again.
+  void onUserCommand(double stamp);
+
+  /// The verdict at time `now`; once a stop is returned it latches until onUserCommand().
+  SafetyVerdict check(double now);
+
+  const SafetyVerdict& latched() const { return latched_; }
+
+ private:
+  SafetyVerdict evaluate(double now) const;
+  bool knownObstacleNear(const Eigen::Vector2d& point) const;
+  /// Distance from `point` to the path ahead of the chair, within stop_distance of travel.
+  bool inCorridorAhead(const Eigen::Vector2d& point) const;
+
+  SafetyLimits limits_;
+  wheelchair_mapping::OccupancyMap map_;
+  std::vector<Eigen::Vector2d> path_;
+  double scan_stamp_ = -1.0, pose_stamp_ = -1.0, localization_stamp_ = -1.0;
+  bool localized_ = false;
+  std::string why_not_localized_ = "no localization yet";
+  Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d pose_ = Eigen::Vector3d::Zero();
+  int unexpected_returns_ = 0;
+  bool driver_fault_ = false;
+  std::string driver_detail_;
+  bool user_stop_ = false;
+  SafetyVerdict latched_;
+};
+
+}  // namespace wheelchair_safety

@@ -1,0 +1,175 @@
+#include <wheelchair_safety/safety_supervisor.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace wheelchair_safety {
+namespace {
+
+SafetyVerdict stopFor(StopReason reason, std::string detail) { return {true, reason, detail}; }
+
+std::string seconds(const char* what, double age) {
+  char text[96];
+  std::snprintf(text, sizeof(text), "%s for %.2f s", what, age);
+  return text;
+}
+
+/// Distance from p to segment [a, b] and the distance along the segment to the foot point.
+double segmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                       double& along) {
+  const Eigen::Vector2d ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  along = t * std::sqrt(len2);
+  return (a + t * ab - p).norm();
+}
+
+}  // namespace
+
+const char* describe(StopReason reason) {
+  switch (reason) {
+    case StopReason::kNone:
+      return "safe";
+    case StopReason::kNoData:
+      return "waiting for sensors";
+    case StopReason::kLocalizationLost:
+      return "the chair does not know where it is";
+    case StopReason::kCovarianceTooLarge:
+      return "the position estimate is too uncertain";
+    case StopReason::kLaserSilent:
+      return "the laser scanner is silent";
+    case StopReason::kPoseStale:
+      return "the position is out of date";
+    case StopReason::kUnexpectedObstacle:
+      return "something is in the way";
+    case StopReason::kDriverFault:
+      return "the motor controller reports a fault";
+    case StopReason::kUserStop:
+      return "stopped by the rider";
+  }
+  return "unknown";
+}
+
+SafetySupervisor::SafetySupervisor(SafetyLimits limits) : limits_(limits) {}
+
+void SafetySupervisor::onMap(const wheelchair_mapping::OccupancyMap& map) { map_ = map; }
+
+void SafetySupervisor::onPath(std::vector<Eigen::Vector2d> path) { path_ = std::move(path); }
+
+void SafetySupervisor::onLocalization(double stamp, bool localized,
+                                      const Eigen::Matrix3d& covariance,
+                                      const std::string& why_not) {
+  localization_stamp_ = stamp;
+  localized_ = localized && covariance.allFinite();
+  why_not_localized_ = covariance.allFinite() ? why_not : "non-finite covariance";
+  if (covariance.allFinite()) covariance_ = covariance;
+}
+
+void SafetySupervisor::onPose(double stamp, const Eigen::Vector3d& pose) {
+  if (!pose.allFinite()) return;  // a non-finite pose never refreshes the watchdog
+  pose_stamp_ = stamp;
+  pose_ = pose;
+}
+
+void SafetySupervisor::onScan(double stamp, const std::vector<Eigen::Vector2d>& returns_in_map) {
+  scan_stamp_ = stamp;
+  unexpected_returns_ = 0;
+  if (path_.empty()) return;
+  for (const auto& point : returns_in_map)
+    if (point.allFinite() && inCorridorAhead(point) && !knownObstacleNear(point))
+      ++unexpected_returns_;
+}
+
+void SafetySupervisor::onDriverStatus(double, bool fault, const std::string& detail) {
+  driver_fault_ = fault;
+  driver_detail_ = detail;
+}
+
+void SafetySupervisor::onUserStop(double) { user_stop_ = true; }
+
+void SafetySupervisor::onUserCommand(double) {
+  user_stop_ = false;
+  latched_ = SafetyVerdict();
+}
+
+bool SafetySupervisor::knownObstacleNear(const Eigen::Vector2d& point) const {
+  int cx, cy;
+  if (map_.width == 0 || !map_.worldToCell(point.x(), point.y(), cx, cy))
+    return map_.width != 0;  // outside the map is not "the path ahead"; no map: unknown
+  const int reach = static_cast<int>(std::ceil(limits_.map_tolerance / map_.resolution));
+  for (int dy = -reach; dy <= reach; ++dy)
+    for (int dx = -reach; dx <= reach; ++dx)
+      if (map_.inBounds(cx + dx, cy + dy) &&
+          map_.at(cx + dx, cy + dy) >= 50)  // occupied in the nav_msgs convention
+        return true;
+  return false;
+}
+
+bool SafetySupervisor::inCorridorAhead(const Eigen::Vector2d& point) const {
+  // Start from the path vertex nearest to the chair, then walk stop_distance forward.
+  const Eigen::Vector2d here = pose_.head<2>();
+  size_t start = 0;
+  double best = INFINITY;
+  for (size_t i = 0; i < path_.size(); ++i) {
+    const double d = (path_[i] - here).squaredNorm();
+    if (d < best) best = d, start = i;
+  }
+  std::vector<Eigen::Vector2d> ahead{here};
+  double travelled = 0.0;
+  for (size_t i = start; i < path_.size() && travelled < limits_.stop_distance; ++i) {
+    travelled += (path_[i] - ahead.back()).norm();
+    ahead.push_back(path_[i]);
+  }
+  double walked = 0.0;
+  for (size_t i = 0; i + 1 < ahead.size(); ++i) {
+    double along = 0.0;
+    const double dist = segmentDistance(point, ahead[i], ahead[i + 1], along);
+    if (dist <= limits_.corridor_half_width && walked + along <= limits_.stop_distance) return true;
+    walked += (ahead[i + 1] - ahead[i]).norm();
+  }
+  return false;
+}
+
+SafetyVerdict SafetySupervisor::evaluate(double now) const {
+  if (user_stop_) return stopFor(StopReason::kUserStop, "switch pressed while driving");
+  if (driver_fault_) return stopFor(StopReason::kDriverFault, driver_detail_);
+  if (scan_stamp_ < 0.0 || pose_stamp_ < 0.0 || localization_stamp_ < 0.0)
+    return stopFor(StopReason::kNoData, scan_stamp_ < 0.0   ? "no laser scan yet"
+                                        : pose_stamp_ < 0.0 ? "no pose yet"
+                                                            : "no localization status yet");
+  if (now - scan_stamp_ > limits_.scan_timeout)
+    return stopFor(StopReason::kLaserSilent, seconds("no laser scan", now - scan_stamp_));
+  if (now - pose_stamp_ > limits_.pose_timeout)
+    return stopFor(StopReason::kPoseStale, seconds("no pose update", now - pose_stamp_));
+  if (now - localization_stamp_ > limits_.localization_timeout)
+    return stopFor(StopReason::kLocalizationLost,
+                   seconds("no localization status", now - localization_stamp_));
+  if (!localized_) return stopFor(StopReason::kLocalizationLost, why_not_localized_);
+  const double xy_std =
+      std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(covariance_.topLeftCorner<2, 2>())
+                    .eigenvalues()
+                    .maxCoeff());
+  const double heading_std = std::sqrt(std::max(0.0, covariance_(2, 2)));
+  if (xy_std > limits_.max_position_std || heading_std > limits_.max_heading_std) {
+    char text[96];
+    std::snprintf(text, sizeof(text), "position std %.2f m, heading std %.2f rad", xy_std,
+                  heading_std);
+    return stopFor(StopReason::kCovarianceTooLarge, text);
+  }
+  if (unexpected_returns_ >= limits_.min_obstacle_returns)
+    return stopFor(StopReason::kUnexpectedObstacle,
+                   std::to_string(unexpected_returns_) + " laser returns on the path ahead");
+  return {};
+}
+
+SafetyVerdict SafetySupervisor::check(double now) {
+  if (latched_.stop) return latched_;
+  const SafetyVerdict verdict = evaluate(now);
+  if (verdict.stop) latched_ = verdict;
+  return verdict;
+}
+
+}  // namespace wheelchair_safety

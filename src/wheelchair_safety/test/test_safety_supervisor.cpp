@@ -1,0 +1,137 @@
+// Each stop condition of the supervisor, its latch, and what must not stop the chair.
+#include <wheelchair_safety/safety_supervisor.h>
+
+#include <gtest/gtest.h>
+
+using namespace wheelchair_safety;
+using wheelchair_mapping::OccupancyMap;
+
+namespace {
+
+/// A 10 m x 4 m free corridor (5 cm cells) whose wall at x = 9 m is in the map.
+OccupancyMap corridorMap() {
+  OccupancyMap map;
+  map.width = 200;
+  map.height = 80;
+  map.data.assign(map.width * map.height, wheelchair_mapping::kFree);
+  for (int y = 0; y < map.height; ++y) map.at(180, y) = wheelchair_mapping::kOccupied;
+  return map;
+}
+
+std::vector<Eigen::Vector2d> straightPath() {
+  std::vector<Eigen::Vector2d> path;
+  for (double x = 1.0; x <= 8.5; x += 0.05) path.emplace_back(x, 2.0);
+  return path;
+}
+
+/// A person: a small arc of returns centred at (x, y).
+std::vector<Eigen::Vector2d> personAt(double x, double y) {
+  std::vector<Eigen::Vector2d> returns;
+  for (double a = -1.0; a <= 1.0; a += 0.2)
+    returns.emplace_back(x - 0.15 * std::cos(a), y + 0.15 * std::sin(a));
+  return returns;
+}
+
+/// A supervisor fed healthy data at time t, chair at (2, 2) heading +x on the path.
+SafetySupervisor healthy(double t = 10.0) {
+  SafetySupervisor s;
+  s.onMap(corridorMap());
+  s.onPath(straightPath());
+  s.onLocalization(t, true, Eigen::Matrix3d::Identity() * 1e-3, "");
+  s.onPose(t, Eigen::Vector3d(2.0, 2.0, 0.0));
+  s.onScan(t, {});
+  return s;
+}
+
+}  // namespace
+
+TEST(SafetySupervisor, HealthyDataDoesNotStop) {
+  SafetySupervisor s = healthy();
+  EXPECT_FALSE(s.check(10.1).stop) << s.check(10.1).detail;
+}
+
+TEST(SafetySupervisor, NoDataYetStops) {
+  SafetySupervisor s;
+  EXPECT_EQ(s.check(0.0).reason, StopReason::kNoData);
+}
+
+TEST(SafetySupervisor, LaserSilentFor300msStops) {
+  SafetySupervisor s = healthy();
+  s.onPose(10.29, Eigen::Vector3d(2.0, 2.0, 0.0));
+  s.onLocalization(10.29, true, Eigen::Matrix3d::Identity() * 1e-3, "");
+  EXPECT_FALSE(s.check(10.29).stop);
+  const SafetyVerdict v = s.check(10.31);
+  EXPECT_EQ(v.reason, StopReason::kLaserSilent);
+  EXPECT_NE(v.detail.find("0.31 s"), std::string::npos) << v.detail;
+}
+
+TEST(SafetySupervisor, StalePoseStops) {
+  SafetySupervisor s = healthy();
+  s.onScan(10.35, {});
+  s.onPose(10.35, Eigen::Vector3d(NAN, 2.0, 0.0));  // non-finite: not a refresh
+  EXPECT_EQ(s.check(10.35).reason, StopReason::kPoseStale);
+}
+
+TEST(SafetySupervisor, LostLocalizationStopsWithTheLocalizersReason) {
+  SafetySupervisor s = healthy();
+  s.onLocalization(10.05, false, Eigen::Matrix3d::Identity() * 1e-3, "two clusters");
+  const SafetyVerdict v = s.check(10.1);
+  EXPECT_EQ(v.reason, StopReason::kLocalizationLost);
+  EXPECT_EQ(v.detail, "two clusters");
+}
+
+TEST(SafetySupervisor, GrowingCovarianceStops) {
+  SafetySupervisor s = healthy();
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Identity() * 1e-3;
+  cov(1, 1) = 0.21 * 0.21;
+  s.onLocalization(10.05, true, cov, "");
+  EXPECT_EQ(s.check(10.1).reason, StopReason::kCovarianceTooLarge);
+}
+
+TEST(SafetySupervisor, DriverFaultStops) {
+  SafetySupervisor s = healthy();
+  s.onDriverStatus(10.05, true, "motor controller heartbeat lost");
+  const SafetyVerdict v = s.check(10.1);
+  EXPECT_EQ(v.reason, StopReason::kDriverFault);
+  EXPECT_EQ(v.detail, "motor controller heartbeat lost");
+}
+
+TEST(SafetySupervisor, PersonSteppingOntoThePathAheadStops) {
+  SafetySupervisor s = healthy();
+  s.onScan(10.05, personAt(2.9, 2.1));  // 0.9 m ahead, on the path
+  EXPECT_EQ(s.check(10.1).reason, StopReason::kUnexpectedObstacle);
+}
+
+TEST(SafetySupervisor, ThingsBesideOrFarAheadOrInTheMapDoNotStop) {
+  SafetySupervisor s = healthy();
+  s.onScan(10.05, personAt(2.9, 2.8));  // beside the corridor (0.8 m off the path)
+  EXPECT_FALSE(s.check(10.1).stop);
+  s.onScan(10.1, personAt(4.0, 2.0));  // 2 m ahead: beyond the stop distance
+  EXPECT_FALSE(s.check(10.15).stop);
+  s.onScan(10.15, {Eigen::Vector2d(2.8, 2.0), Eigen::Vector2d(2.9, 2.0)});  // two stray returns
+  EXPECT_FALSE(s.check(10.2).stop);
+  s.onPose(10.2, Eigen::Vector3d(8.2, 2.0, 0.0));  // near the end, the mapped wall ahead
+  s.onLocalization(10.2, true, Eigen::Matrix3d::Identity() * 1e-3, "");
+  s.onScan(10.2, personAt(9.0, 2.0));
+  EXPECT_FALSE(s.check(10.25).stop) << s.check(10.25).detail;
+}
+
+TEST(SafetySupervisor, StopLatchesUntilTheRiderCommandsAgain) {
+  SafetySupervisor s = healthy();
+  s.onScan(10.05, personAt(2.9, 2.0));
+  ASSERT_TRUE(s.check(10.1).stop);
+  s.onScan(10.2, {});  // the person has gone: still stopped
+  s.onPose(10.2, Eigen::Vector3d(2.0, 2.0, 0.0));
+  s.onLocalization(10.2, true, Eigen::Matrix3d::Identity() * 1e-3, "");
+  EXPECT_EQ(s.check(10.25).reason, StopReason::kUnexpectedObstacle);
+  s.onUserCommand(10.3);
+  EXPECT_FALSE(s.check(10.3).stop);
+}
+
+TEST(SafetySupervisor, UserStopWins) {
+  SafetySupervisor s = healthy();
+  s.onUserStop(10.05);
+  EXPECT_EQ(s.check(10.1).reason, StopReason::kUserStop);
+  s.onUserCommand(10.2);
+  EXPECT_FALSE(s.check(10.2).stop);
+}
