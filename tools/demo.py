@@ -79,14 +79,14 @@ class Demo:
         return self.start(name, ["rosrun", package, executable, *arguments])
 
     def stop_all(self):
-        """SIGTERM to every process group we started, newest first; SIGKILL after 5 s."""
+        """SIGTERM to every process group we started, newest first; SIGKILL after 10 s."""
         for name, process in reversed(self.processes):
             if process.poll() is None:
                 try:
                     os.killpg(process.pid, signal.SIGTERM)
                 except ProcessLookupError:
                     pass
-        deadline = time.monotonic() + 5.0
+        deadline = time.monotonic() + 10.0
         for name, process in reversed(self.processes):
             try:
                 process.wait(max(0.1, deadline - time.monotonic()))
@@ -204,11 +204,13 @@ def snapshot(demo, name, view):
     command = ["rosrun", "wheelchair_bringup", "snapshot", "--out", str(demo.out / f"{name}.png"),
                "--seconds", str(demo.args.snapshot_seconds), "--view", ",".join(f"{v:.3f}" for v in view),
                "--log", str(demo.logs / f"rviz_{name}.log")]
-    run = subprocess.run(command, capture_output=True, text=True, timeout=demo.args.snapshot_seconds + 120)
-    (demo.logs / f"snapshot_{name}.log").write_text(run.stdout + run.stderr)
-    if run.returncode != 0:
-        lines = (run.stderr or run.stdout).strip().splitlines()
-        raise DemoError(f"snapshot {name}.png failed: {lines[-1] if lines else run.returncode}")
+    process = demo.start(f"snapshot_{name}", command)  # stopped with the rest if we are interrupted
+    try:
+        code = process.wait(demo.args.snapshot_seconds + 120)
+    except subprocess.TimeoutExpired:
+        raise DemoError(f"snapshot {name}.png did not finish (log: logs/snapshot_{name}.log)") from None
+    if code != 0:
+        raise DemoError(f"snapshot {name}.png failed: {demo.log_tail(f'snapshot_{name}', 1)}")
     demo.facts.setdefault("snapshot_seconds", []).append(time.monotonic() - started)
     return f"{name}.png"
 
