@@ -1,0 +1,134 @@
+// The controller: path in, wheel torques out. Phases: optional in-place alignment to the path,
+// path tracking of P_l (off-tracking compensated), in-place rotation to the goal heading, brake.
+// Every fault (non-finite or stale input, pose jump, empty or zero-length path, tracking error
+// too large) ends in the same ControlledStop.
+#pragma once
+
+#include <wheelchair_controller/controlled_stop.h>
+#include <wheelchair_controller/linearization.h>
+#include <wheelchair_controller/output_trajectory.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace wheelchair_controller {
+
+struct TrackerConfig {
+  double natural_frequency = 2.5;   ///< w_n of the output error dynamics [rad/s]
+  double damping = 1.0;             ///< zeta (1: critically damped, no overshoot)
+  double max_feedback_accel = 0.5;  ///< |feedback part of v| limit [m/s^2]
+  PathLimits path_limits;           ///< comfort limits (speed 0.8, accel 0.5, jerk 1.0)
+  double limit_margin = 0.8;        ///< the nominal reference uses this share of the comfort limits
+  MotionLimits rotation_limits{0.6, 0.8, 1.6};  ///< in-place rotation [rad/s, rad/s^2, rad/s^3]
+  double start_heading_tolerance = 0.5;         ///< [rad] larger: rotate in place before the path
+  double goal_position_tolerance = 0.05;        ///< [m] P_l at the end of the reference
+  double goal_heading_tolerance = 0.05;         ///< [rad]
+  double goal_timeout = 5.0;        ///< [s] after the reference ends, to settle within tolerance
+  double stale_pose_timeout = 0.2;  ///< [s]
+  double stale_odometry_timeout = 0.2;  ///< [s]
+  double pose_jump = 0.5;             ///< [m] between the predicted and the measured axle position
+  double governor_soft_error = 0.10;  ///< [m] reference slows above this tracking error
+  double governor_hard_error = 0.40;  ///< [m] reference waits above this tracking error
+  double governor_rate = 1.0;         ///< [1/s] max change of the reference's time rate
+  double abort_error = 1.0;           ///< [m] tracking error that aborts
+  double prediction_step = 0.02;      ///< [s] RK2 step of the internal model
+  bool dynamic_terms = true;  ///< false: kinematic baseline (no f1, f2, no rolling feed-forward)
+  double kinematic_wheel_gain = 20.0;  ///< [N m s/rad] baseline's wheel-speed loop
+  bool compensate_rolling_resistance = true;
+  StopConfig stop;
+};
+
+enum class TrackerState {
+  kIdle,
+  kAligning,
+  kTracking,
+  kRotatingToGoal,
+  kStopping,
+  kGoalReached,
+  kAborted
+};
+const char* toString(TrackerState state);
+
+struct PoseMeasurement {
+  double stamp = 0.0;          ///< [s]
+  Pose2 pose = Pose2::Zero();  ///< base_link (axle centre P) in map
+};
+struct WheelSpeedMeasurement {
+  double stamp = 0.0;
+  Eigen::Vector2d eta = Eigen::Vector2d::Zero();  ///< [psi_r_dot, psi_l_dot] rad/s
+};
+
+/// What one control step produced, for the actuators and for monitoring.
+struct TrackerOutput {
+  WheelCommand command;
+  TrackerState state = TrackerState::kIdle;
+  std::string reason;                           ///< why the last stop began (empty otherwise)
+  bool has_reference = false;                   ///< y, reference, body_deviation valid
+  Eigen::Vector2d y = Eigen::Vector2d::Zero();  ///< P_l (estimated)
+  OutputReference reference;
+  double body_deviation = 0.0;  ///< distance of the axle centre P from the planned path [m]
+  double saturation_scale = 1.0;
+  double reference_rate = 1.0;  ///< governor's time rate (1: on schedule)
+};
+
+class PathTracker {
+ public:
+  PathTracker(const ChairParams& chair, const TrackerConfig& config);
+
+  /// New path (base_link poses in map), replacing the current one. A rejected path
+  /// (empty, non-finite, zero-length) starts a controlled stop; the reason is returned.
+  std::string setPath(const std::vector<Pose2>& path);
+  /// Stops (controlled) with the given reason.
+  void abort(const std::string& reason);
+  /// One control step at time `now` [s]: latest pose (nullopt: none, e.g. lost
+  /// localization) and wheel speeds from odometry.
+  TrackerOutput update(double now, const std::optional<PoseMeasurement>& pose,
+                       const WheelSpeedMeasurement& wheels);
+
+  TrackerState state() const { return state_; }
+  const std::string& reason() const { return reason_; }
+  const TrackerConfig& config() const { return config_; }
+
+ private:
+  using State = wheelchair_description::State;
+  std::string checkInputs(double now, const std::optional<PoseMeasurement>& pose,
+                          const WheelSpeedMeasurement& wheels) const;
+  State estimateState(double now, const PoseMeasurement& pose, const Eigen::Vector2d& eta) const;
+  void startPhases(const State& x);
+  /// Advances the reference time (governor: anti-windup) and returns the reference.
+  OutputReference governedReference(double dt, double error);
+  /// At the end of a phase: next phase, goal reached, or goal timeout. False: stop began.
+  bool advancePhase(double dt, const State& x, double error);
+  Eigen::Vector2d trackingTorque(const State& x, const OutputReference& ref) const;
+  void beginStop(const std::string& reason, const Eigen::Vector2d& eta, TrackerState end_state);
+  TrackerOutput stopStep(double dt, const Eigen::Vector2d& eta);
+
+  ChairParams chair_;
+  TrackerConfig config_;
+  OuterGains gains_;
+  ControlledStop stop_;
+  TrackerState state_ = TrackerState::kIdle, stop_end_state_ = TrackerState::kAborted;
+  std::string reason_;
+
+  std::shared_ptr<const SmoothPath> path_;
+  bool path_pending_ = false;
+  struct Phase {
+    std::unique_ptr<OutputTrajectory> trajectory;
+    TrackerState state;
+  };
+  std::vector<Phase> phases_;  ///< remaining phases, current first
+  double goal_heading_ = 0.0;
+  double phase_time_ = 0.0, rate_ = 1.0, rate_dot_ = 0.0, overtime_ = 0.0;
+  bool rate_initialized_ = false;
+  double last_saturation_ = 1.0;
+  Eigen::Vector2d last_body_accel_ = Eigen::Vector2d::Zero();  ///< (a, w_dot) commanded
+
+  bool have_last_ = false;
+  double last_time_ = 0.0;
+  State last_state_ = State::Zero();
+  Eigen::Vector2d last_torque_ = Eigen::Vector2d::Zero();
+};
+
+}  // namespace wheelchair_controller

@@ -1,0 +1,41 @@
+// Hand-made smooth paths at the scale of a home (for the tests and the benchmark until the
+// flat world and the planner provide real ones), and the paper's Figure 6 cosine path.
+#pragma once
+
+#include <wheelchair_controller/smooth_path.h>
+
+#include <string>
+#include <vector>
+
+namespace wheelchair_controller {
+
+/// Builds a path of base_link poses every `spacing` m from a start pose and segments.
+class PathBuilder {
+ public:
+  explicit PathBuilder(const Pose2& start, double spacing = 0.05);
+  PathBuilder& straight(double length);
+  /// Arc of the given radius turning by angle [rad] (positive: left).
+  PathBuilder& arc(double radius, double angle);
+  /// The poses; the last one's yaw is set to goal_heading if given.
+  std::vector<Pose2> poses() const { return poses_; }
+  std::vector<Pose2> posesWithGoalHeading(double goal_heading) const;
+
+ private:
+  std::vector<Pose2> poses_;
+  double spacing_;
+};
+
+struct NamedPath {
+  std::string name;
+  std::vector<Pose2> poses;  ///< the chair starts at rest at poses.front()
+};
+
+/// Ten paths of a home-like scale (hallway, doorway turns, S-curves, around a table, ...).
+std::vector<NamedPath> homeTestPaths();
+
+/// Figure 6: y = amplitude cos(2 pi x / wavelength), x in [0, length]; the chair starts at the
+/// origin heading +x, i.e. `amplitude` to the side of the path's start.
+std::vector<Pose2> cosinePath(double amplitude = 0.3, double wavelength = 4.0, double length = 8.0,
+                              double spacing = 0.05);
+
+}  // namespace wheelchair_controller

@@ -1,0 +1,77 @@
+#include <wheelchair_controller/linearization.h>
+
+#include <Eigen/LU>
+
+#include <cmath>
+
+namespace wheelchair_controller {
+namespace wd = wheelchair_description;
+
+namespace {
+/// d + L: distance from P_c to P_l.
+double outputOffset(const ChairParams& p) { return p.cm_offset + p.lookahead; }
+}  // namespace
+
+// Eq. 18.
+Eigen::Vector2d outputPoint(const Vector5& q, const ChairParams& p) {
+  const double th = q(wd::kTheta), k = outputOffset(p);
+  return {q(wd::kXc) + k * std::cos(th), q(wd::kYc) + k * std::sin(th)};
+}
+
+Matrix25 outputJacobian(const Vector5& q, const ChairParams& p) {
+  const double th = q(wd::kTheta), k = outputOffset(p);
+  Matrix25 j = Matrix25::Zero();
+  j(0, 0) = 1.0;
+  j(1, 1) = 1.0;
+  j(0, 2) = -k * std::sin(th);
+  j(1, 2) = k * std::cos(th);
+  return j;
+}
+
+// Eq. 19.
+Eigen::Matrix2d decouplingMatrix(const Vector5& q, const ChairParams& p) {
+  return outputJacobian(q, p) * wd::nullSpaceBasis(q, p);
+}
+
+Eigen::Matrix2d decouplingMatrixDot(const Vector5& q, const Eigen::Vector2d& eta,
+                                    const ChairParams& p) {
+  const wd::Matrix52 s = wd::nullSpaceBasis(q, p);
+  const double th = q(wd::kTheta), k = outputOffset(p);
+  const double th_dot = (s * eta)(wd::kTheta);
+  Matrix25 j_dot = Matrix25::Zero();
+  j_dot(0, 2) = -k * std::cos(th) * th_dot;
+  j_dot(1, 2) = -k * std::sin(th) * th_dot;
+  return j_dot * s + outputJacobian(q, p) * wd::nullSpaceBasisDot(q, th_dot, p);
+}
+
+// Eq. 19, first line.
+Eigen::Vector2d outputVelocity(const Vector5& q, const Eigen::Vector2d& eta, const ChairParams& p) {
+  return decouplingMatrix(q, p) * eta;
+}
+
+// Eq. 21: y_ddot = Phi_dot eta + Phi u = v  =>  u = Phi^{-1} (v - Phi_dot eta).
+Eigen::Vector2d linearizingInput(const Vector5& q, const Eigen::Vector2d& eta,
+                                 const Eigen::Vector2d& v, const ChairParams& p) {
+  return decouplingMatrix(q, p).partialPivLu().solve(v - decouplingMatrixDot(q, eta, p) * eta);
+}
+
+// Section 3.3: tau = f1 u + f2.
+Eigen::Vector2d computedTorque(const Vector5& q, const Eigen::Vector2d& eta,
+                               const Eigen::Vector2d& u, const ChairParams& p) {
+  return wd::dynamicsF1(q, p) * u + wd::dynamicsF2(q, eta, p);
+}
+
+Eigen::Vector2d rollingResistanceTorque(const Eigen::Vector2d& eta, const ChairParams& p) {
+  constexpr double kGravity = 9.81;
+  constexpr double kSmoothingSpeed = 0.02;  // [m/s] rim speed where the sign is smoothed
+  const double per_wheel =
+      0.5 * p.rolling_resistance * (p.total_mass + 2.0 * p.wheel_mass) * kGravity * p.wheel_radius;
+  return eta.unaryExpr(
+      [&](double w) { return per_wheel * std::tanh(w * p.wheel_radius / kSmoothingSpeed); });
+}
+
+Vector5 configurationAtAxlePose(const Eigen::Vector3d& pose, const ChairParams& p) {
+  return wd::stateAtAxlePose(pose.x(), pose.y(), pose.z(), p).head<5>();
+}
+
+}  // namespace wheelchair_controller
