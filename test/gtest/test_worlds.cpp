@@ -50,8 +50,8 @@ TEST_P(World, IsATrinaryMapServerMapWithOriginAtZero) {
   EXPECT_EQ(grid_.origin_y, 0.0);
   EXPECT_EQ(grid_.origin_yaw, 0.0);
   EXPECT_EQ(grid_.mode, "trinary");
-  for (int value : grid_.pixel_values) {
-    EXPECT_TRUE(value == 0 || value == 205 || value == 254) << "pixel value " << value;
+  for (int value : grid_.values) {  // trinary: only free, occupied or unknown cells
+    EXPECT_TRUE(value == -1 || value == 0 || value == 100) << "cell value " << value;
   }
 }
 

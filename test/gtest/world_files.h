@@ -1,6 +1,6 @@
-// Reads a test world as the tests see it: the map_server YAML + PGM (independently of the
-// project's own map loader, so that the world files and the loader check each other), and
-// the world's named places and doorways.
+// Reads a test world as the tests see it: the map (through the project's own map_server loader,
+// wheelchair_mapping::loadMap, so the worlds and the loader check each other) and the world's
+// named places and doorways.
 #pragma once
 
 #include <cmath>
@@ -16,10 +16,10 @@ enum class Cell : uint8_t { kFree, kOccupied, kUnknown };
 struct Grid {
   double resolution = 0.0;
   double origin_x = 0.0, origin_y = 0.0, origin_yaw = 0.0;
-  std::string mode;
+  std::string mode;  ///< the YAML's `mode`
   int width = 0, height = 0;
   std::vector<Cell> cells;
-  std::vector<int> pixel_values;  ///< distinct PGM pixel values, sorted
+  std::vector<int> values;  ///< distinct nav_msgs cell values (-1, 0..100), sorted
 
   bool inBounds(int ix, int iy) const { return ix >= 0 && iy >= 0 && ix < width && iy < height; }
   Cell at(int ix, int iy) const { return cells[static_cast<size_t>(iy) * width + ix]; }
