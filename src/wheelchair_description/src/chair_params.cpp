@@ -9,14 +9,39 @@
 namespace wheelchair_description {
 namespace {
 
-double requireNumber(const YAML::Node& root, const std::string& key, const std::string& file) {
+/// The number at root[key]; `name` is how the message calls it (e.g. "laser.x").
+template <typename Key>
+double requireNumber(const YAML::Node& root, const Key& key, const std::string& name,
+                     const std::string& file) {
   const YAML::Node node = root[key];
-  if (!node) throw std::runtime_error(file + ": missing parameter '" + key + "'");
+  if (!node) throw std::runtime_error(file + ": missing parameter '" + name + "'");
   try {
     return node.as<double>();
   } catch (const YAML::Exception&) {
-    throw std::runtime_error(file + ": parameter '" + key + "' is not a number");
+    throw std::runtime_error(file + ": parameter '" + name + "' is not a number");
   }
+}
+
+double requireNumber(const YAML::Node& root, const std::string& key, const std::string& file) {
+  return requireNumber(root, key, key, file);
+}
+
+/// footprint: a sequence of [x, y] pairs.
+std::vector<Eigen::Vector2d> requireFootprint(const YAML::Node& root, const std::string& file) {
+  const YAML::Node node = root["footprint"];
+  if (!node) throw std::runtime_error(file + ": missing parameter 'footprint'");
+  if (!node.IsSequence())
+    throw std::runtime_error(file + ": parameter 'footprint' is not a list of [x, y] points");
+  std::vector<Eigen::Vector2d> footprint;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const YAML::Node vertex = node[i];
+    const std::string name = "footprint[" + std::to_string(i) + "]";
+    if (!vertex.IsSequence() || vertex.size() != 2)
+      throw std::runtime_error(file + ": parameter '" + name + "' is not an [x, y] point");
+    footprint.emplace_back(requireNumber(vertex, 0, name + "[0]", file),
+                           requireNumber(vertex, 1, name + "[1]", file));
+  }
+  return footprint;
 }
 
 void requirePositive(double value, const char* name) {
@@ -24,6 +49,11 @@ void requirePositive(double value, const char* name) {
     throw std::invalid_argument(std::string("chair parameter '") + name +
                                 "' must be finite and positive (got " + std::to_string(value) +
                                 ")");
+}
+
+void requireFinite(double value, const char* name) {
+  if (!std::isfinite(value))
+    throw std::invalid_argument(std::string("chair parameter '") + name + "' is not finite");
 }
 
 }  // namespace
@@ -46,18 +76,20 @@ void validate(const ChairParams& p) {
   requirePositive(p.max_speed, "max_speed");
   requirePositive(p.width, "width");
   requirePositive(p.length, "length");
-  if (!std::isfinite(p.cm_offset))
-    throw std::invalid_argument("chair parameter 'cm_offset' is not finite");
+  requireFinite(p.cm_offset, "cm_offset");
   if (!std::isfinite(p.lookahead) || p.lookahead == 0.0)
     throw std::invalid_argument("chair parameter 'lookahead' must be finite and non-zero (eq. 19)");
   if (!std::isfinite(p.rolling_resistance) || p.rolling_resistance < 0.0)
     throw std::invalid_argument("chair parameter 'rolling_resistance' must be >= 0");
-  if (p.footprint.size() < 3) throw std::invalid_argument("chair footprint needs >= 3 vertices");
+  if (p.footprint.size() < 3)
+    throw std::invalid_argument("chair parameter 'footprint' needs >= 3 vertices");
   for (const auto& v : p.footprint)
-    if (!v.allFinite()) throw std::invalid_argument("chair footprint has a non-finite vertex");
-  if (!std::isfinite(p.laser_x) || !std::isfinite(p.laser_y) || !std::isfinite(p.laser_z) ||
-      !std::isfinite(p.laser_yaw))
-    throw std::invalid_argument("chair laser mount is not finite");
+    if (!v.allFinite())
+      throw std::invalid_argument("chair parameter 'footprint' has a non-finite vertex");
+  requireFinite(p.laser_x, "laser.x");
+  requireFinite(p.laser_y, "laser.y");
+  requireFinite(p.laser_z, "laser.z");
+  requireFinite(p.laser_yaw, "laser.yaw");
 }
 
 ChairParams loadChairParams(const std::string& yaml_path) {
@@ -83,18 +115,14 @@ ChairParams loadChairParams(const std::string& yaml_path) {
   p.rolling_resistance = requireNumber(root, "rolling_resistance", yaml_path);
   p.width = requireNumber(root, "width", yaml_path);
   p.length = requireNumber(root, "length", yaml_path);
-  try {
-    for (const auto& vertex : root["footprint"])
-      p.footprint.emplace_back(vertex[0].as<double>(), vertex[1].as<double>());
-    const YAML::Node laser = root["laser"];
-    if (!laser) throw std::runtime_error(yaml_path + ": missing parameter 'laser'");
-    p.laser_x = laser["x"].as<double>();
-    p.laser_y = laser["y"].as<double>();
-    p.laser_z = laser["z"].as<double>();
-    p.laser_yaw = laser["yaw"].as<double>();
-  } catch (const YAML::Exception& e) {
-    throw std::runtime_error(yaml_path + ": bad footprint or laser mount: " + e.what());
-  }
+  p.footprint = requireFootprint(root, yaml_path);
+  const YAML::Node laser = root["laser"];
+  if (!laser || !laser.IsMap())
+    throw std::runtime_error(yaml_path + ": missing parameter 'laser' {x, y, z, yaw}");
+  p.laser_x = requireNumber(laser, "x", "laser.x", yaml_path);
+  p.laser_y = requireNumber(laser, "y", "laser.y", yaml_path);
+  p.laser_z = requireNumber(laser, "z", "laser.z", yaml_path);
+  p.laser_yaw = requireNumber(laser, "yaw", "laser.yaw", yaml_path);
   try {
     validate(p);
   } catch (const std::invalid_argument& e) {
