@@ -178,13 +178,15 @@ TEST(Office, HasA40mCorridorAbout1_8mWide) {
   EXPECT_LT(longestFreeBandAlongX(grid, 1.90), 40.0);  // not wider: a corridor, not a hall
 }
 
-/// Cells that differ between the grid and the grid transformed by `map` (ix, iy) -> (jx, jy).
-template <typename Transform>
-int cellsDifferingUnder(const Grid& grid, Transform map) {
+enum class Symmetry { kRotation180, kMirrorLeftRight, kMirrorTopBottom };
+
+/// Cells that differ between the grid and its image under `symmetry`.
+int cellsDifferingUnder(const Grid& grid, Symmetry symmetry) {
   int differ = 0;
   for (int iy = 0; iy < grid.height; ++iy) {
     for (int ix = 0; ix < grid.width; ++ix) {
-      const auto [jx, jy] = map(ix, iy);
+      const int jx = symmetry == Symmetry::kMirrorTopBottom ? ix : grid.width - 1 - ix;
+      const int jy = symmetry == Symmetry::kMirrorLeftRight ? iy : grid.height - 1 - iy;
       differ += grid.at(ix, iy) != grid.at(jx, jy);
     }
   }
@@ -193,32 +195,19 @@ int cellsDifferingUnder(const Grid& grid, Transform map) {
 
 TEST(Office, IsNotSymmetric) {
   const auto grid = loadWorldMap(worldFile("office", ".yaml"));
-  const int w = grid.width, h = grid.height;
-  EXPECT_GT(cellsDifferingUnder(grid,
-                                [&](int x, int y) {
-                                  return std::pair{w - 1 - x, h - 1 - y};
-                                }),
-            1000);
-  EXPECT_GT(cellsDifferingUnder(grid, [&](int x, int y) { return std::pair{w - 1 - x, y}; }), 1000);
-  EXPECT_GT(cellsDifferingUnder(grid, [&](int x, int y) { return std::pair{x, h - 1 - y}; }), 1000);
+  for (auto symmetry :
+       {Symmetry::kRotation180, Symmetry::kMirrorLeftRight, Symmetry::kMirrorTopBottom}) {
+    EXPECT_GT(cellsDifferingUnder(grid, symmetry), 1000) << static_cast<int>(symmetry);
+  }
 }
 
 TEST(Symmetric, MapAndPlacesEqualTheir180DegreeRotation) {
   const auto grid = loadWorldMap(worldFile("symmetric", ".yaml"));
-  const int w = grid.width, h = grid.height;
-  EXPECT_EQ(cellsDifferingUnder(grid,
-                                [&](int x, int y) {
-                                  return std::pair{w - 1 - x, h - 1 - y};
-                                }),
-            0);
-  EXPECT_GT(cellsDifferingUnder(grid,
-                                [&](int x, int y) {
-                                  return std::pair{w - 1 - x, y};
-                                }),
-            100)
+  EXPECT_EQ(cellsDifferingUnder(grid, Symmetry::kRotation180), 0);
+  EXPECT_GT(cellsDifferingUnder(grid, Symmetry::kMirrorLeftRight), 100)
       << "the two rooms are mirror images, not rotated copies";
   const auto places = loadPlaces(worldFile("symmetric", ".places.yaml"));
-  const double cx = w * grid.resolution / 2, cy = h * grid.resolution / 2;
+  const double cx = grid.width * grid.resolution / 2, cy = grid.height * grid.resolution / 2;
   for (const auto& p : places) {
     const bool has_twin = std::any_of(places.begin(), places.end(), [&](const Place& q) {
       return q.room != p.room && std::abs(q.x - (2 * cx - p.x)) < 1e-6 &&
