@@ -289,7 +289,7 @@ def main():
     parser.add_argument("--out", required=True, help="output directory (emptied first)")
     parser.add_argument("--world", default="flat", help="world under test/worlds (default: flat)")
     parser.add_argument("--place", default="living_centre", help="named place where the chair stands")
-    parser.add_argument("--snapshot-seconds", type=float, default=5.0, help="time rviz gets to fill its displays")
+    parser.add_argument("--snapshot-seconds", type=float, default=4.0, help="time rviz gets to fill its displays")
     args = parser.parse_args()
     if subprocess.run(["rospack", "find", "wheelchair_bringup"], capture_output=True).returncode != 0:
         print("[demo] error: the workspace is not built and sourced (use ./wheelchair demo)", file=sys.stderr)

@@ -77,7 +77,7 @@ class SnapshotShowsTheMap(unittest.TestCase):
         cls.png = pathlib.Path(cls.tmp.name) / "map.png"
         started = time.monotonic()
         cls.result = subprocess.run(
-            [sys.executable, os.environ["SNAPSHOT"], "--out", str(cls.png), "--seconds", "6",
+            [sys.executable, os.environ["SNAPSHOT"], "--out", str(cls.png), "--seconds", "5",
              "--view", f"{WIDTH / 2},{HEIGHT / 2},{SCALE}"], capture_output=True, text=True, timeout=180)
         cls.seconds = time.monotonic() - started
         print(f"snapshot took {cls.seconds:.1f} s: {cls.result.stdout}{cls.result.stderr}")
