@@ -1,0 +1,77 @@
+// bench/sim: simulated seconds per wall-clock second of the simulator core (dynamics at
+// physics_rate, odometry, laser at laser_rate), on the given worlds. Prints a JSON array.
+// usage: bench_sim SIM_SECONDS WORLD.yaml [WORLD.yaml ...]
+#include <wheelchair_sim/simulated_chair.h>
+#include <wheelchair_sim/world_loader.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+namespace {
+
+using wheelchair_sim::SimulatedChair;
+
+/// A free pose near the middle of the world, searched outward on a 0.25 m grid.
+bool findFreePose(SimulatedChair& sim, const mrpt::maps::COccupancyGridMap2D& g) {
+  const double cx = 0.5 * (g.getXMin() + g.getXMax()), cy = 0.5 * (g.getYMin() + g.getYMax());
+  for (double r = 0.0; r < 0.5 * (g.getXMax() - g.getXMin()); r += 0.25) {
+    for (double a = 0.0; a < 2 * M_PI; a += 0.1) {
+      if (sim.reset(cx + r * std::cos(a), cy + r * std::sin(a), a)) return true;
+    }
+  }
+  return false;
+}
+
+/// Simulated seconds per wall second, turning in place (the laser sweeps the whole world).
+double realTimeFactor(SimulatedChair& sim, double seconds, double step) {
+  sim.simulator().applyWheelTorques(6.0, -6.0, false);
+  const auto start = std::chrono::steady_clock::now();
+  for (double t = 0.0; t < seconds; t += step) sim.advance(step);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return seconds / wall;
+}
+
+std::string stem(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1);
+  return name.substr(0, name.find('.'));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::cerr << "usage: bench_sim SIM_SECONDS WORLD.yaml [WORLD.yaml ...]\n";
+    return 2;
+  }
+  const double seconds = std::stod(argv[1]);
+  const auto chair =
+      wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath());
+  const auto params = wheelchair_sim::loadSimParams(wheelchair_sim::defaultSimParamsPath());
+  bool first = true;
+  std::printf("[");
+  for (int i = 2; i < argc; ++i) {
+    const auto world = wheelchair_sim::loadWorld(argv[i]);
+    for (bool laser : {true, false}) {
+      auto p = params;
+      p.laser_enabled = laser;
+      SimulatedChair sim(chair, p, world);
+      if (!findFreePose(sim, *world)) {
+        std::cerr << "no free pose in " << argv[i] << "\n";
+        return 1;
+      }
+      const double factor = realTimeFactor(sim, seconds, 0.005);
+      std::printf(
+          "%s\n {\"case\": \"%s\", \"method\": \"%s\", \"metric\": \"real_time_factor\", "
+          "\"value\": %.1f, \"unit\": \"sim s / wall s\"}",
+          first ? "" : ",", stem(argv[i]).c_str(),
+          laser ? "rk4_1kHz+laser_10Hz_361" : "rk4_1kHz_no_laser", factor);
+      first = false;
+    }
+  }
+  std::printf("\n]\n");
+  return 0;
+}

@@ -1,0 +1,44 @@
+#include <wheelchair_sim/simulated_chair.h>
+
+namespace wheelchair_sim {
+
+bool Schedule::due(double now) {
+  if (now + 1e-9 < next_) return false;
+  next_ += period_;
+  if (next_ <= now) next_ = now + period_;
+  return true;
+}
+
+SimulatedChair::SimulatedChair(const wheelchair_description::ChairParams& chair,
+                               const SimParams& params,
+                               std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> world)
+    : sim_(chair, params, world),
+      odometry_(chair, params, static_cast<uint64_t>(params.seed) * 7919u + 1u),
+      odom_schedule_(params.odom_rate),
+      scan_schedule_(params.laser_rate) {
+  if (world && params.laser_enabled) {
+    laser_.emplace(params, Eigen::Vector3d(chair.laser_x, chair.laser_y, chair.laser_yaw), world);
+  }
+  odometry_.reset(Eigen::Vector3d::Zero(), sim_.readWheels().angle);
+}
+
+SensorOutputs SimulatedChair::advance(double dt) {
+  const bool was_collided = sim_.collided();
+  sim_.step(dt);
+  odometry_.update(sim_.readWheels().angle, dt);
+  SensorOutputs out;
+  out.collision_started = sim_.collided() && !was_collided;
+  out.odometry_due = odom_schedule_.due(sim_.time());
+  if (laser_ && scan_schedule_.due(sim_.time())) out.scan = laser_->scan(sim_.pose());
+  return out;
+}
+
+bool SimulatedChair::teleport(double x, double y, double yaw) { return sim_.teleport(x, y, yaw); }
+
+bool SimulatedChair::reset(double x, double y, double yaw) {
+  if (!sim_.teleport(x, y, yaw)) return false;
+  odometry_.reset(Eigen::Vector3d::Zero(), sim_.readWheels().angle);
+  return true;
+}
+
+}  // namespace wheelchair_sim

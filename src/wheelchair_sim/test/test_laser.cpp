@@ -1,0 +1,92 @@
+// The simulated laser against the analytic distance to a known wall.
+#include <wheelchair_sim/laser_simulator.h>
+
+#include "test_worlds.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace wheelchair_sim {
+namespace {
+
+constexpr double kRes = 0.05;
+
+TEST(Laser, BeamCountAndAnglesAreTheSicks) {
+  SimParams params;
+  LaserSimulator laser(params, Eigen::Vector3d::Zero(), test::wallWorld(3.0));
+  const Scan scan = laser.scan(Eigen::Vector3d::Zero());
+  ASSERT_EQ(scan.ranges.size(), 361u);
+  EXPECT_NEAR(scan.angle_min, -M_PI / 2, 1e-12);
+  EXPECT_NEAR(scan.angleMax(), M_PI / 2, 1e-12);
+  EXPECT_NEAR(scan.angle_increment, 0.5 * M_PI / 180.0, 1e-12);
+  EXPECT_DOUBLE_EQ(scan.range_max, params.laser_range_max);
+}
+
+// Wall face at x = 3; chair at (0.4, -0.6), heading 0.3; laser mounted 0.28 m ahead of P.
+TEST(Laser, RangesMatchTheAnalyticWallDistance) {
+  const auto chair = test::chair();
+  SimParams params;
+  params.laser_range_noise = 0.01;
+  const Eigen::Vector3d mount(chair.laser_x, chair.laser_y, chair.laser_yaw);
+  LaserSimulator laser(params, mount, test::wallWorld(3.0));
+  const Eigen::Vector3d base(0.4, -0.6, 0.3);
+  const Eigen::Vector3d sensor = laser.laserPose(base);
+  EXPECT_NEAR(sensor.x(), 0.4 + chair.laser_x * std::cos(0.3), 1e-12);
+  const Scan scan = laser.scan(base);
+  int checked = 0, no_return = 0;
+  for (size_t i = 0; i < scan.ranges.size(); ++i) {
+    const double a = sensor.z() + scan.angle_min + i * scan.angle_increment;
+    const double expected = (3.0 - sensor.x()) / std::cos(a);
+    const double hit_y = sensor.y() + expected * std::sin(a);
+    if (std::cos(a) > 0.05 && std::abs(hit_y) < 4.8 && expected < params.laser_range_max) {
+      // Noise (4 sigma) + MRPT's ray marching resolution (one cell along the ray).
+      EXPECT_NEAR(scan.ranges[i], expected, 4 * params.laser_range_noise + kRes / std::cos(a))
+          << "beam " << i;
+      ++checked;
+    } else if (std::cos(a) < 0.0) {
+      EXPECT_TRUE(std::isinf(scan.ranges[i])) << "beam " << i << " leaves the map: no return";
+      ++no_return;
+    }
+  }
+  EXPECT_GT(checked, 250);
+  EXPECT_GT(no_return, 10);
+}
+
+TEST(Laser, RangeNoiseHasTheConfiguredSpread) {
+  SimParams exact, noisy;
+  exact.laser_range_noise = 0.0;
+  noisy.laser_range_noise = 0.03;
+  auto world = test::wallWorld(4.0);
+  LaserSimulator reference(exact, Eigen::Vector3d::Zero(), world);
+  LaserSimulator laser(noisy, Eigen::Vector3d::Zero(), world);
+  const Eigen::Vector3d base(0.0, 0.0, 0.0);
+  const Scan truth = reference.scan(base);
+  double sum = 0.0, sum2 = 0.0;
+  int n = 0;
+  for (int k = 0; k < 20; ++k) {
+    const Scan scan = laser.scan(base);
+    for (size_t i = 0; i < scan.ranges.size(); ++i) {
+      if (!std::isfinite(truth.ranges[i]) || !std::isfinite(scan.ranges[i])) continue;
+      const double e = scan.ranges[i] - truth.ranges[i];
+      sum += e;
+      sum2 += e * e;
+      ++n;
+    }
+  }
+  ASSERT_GT(n, 3000);
+  const double mean = sum / n, stddev = std::sqrt(sum2 / n - mean * mean);
+  EXPECT_NEAR(mean, 0.0, 4 * noisy.laser_range_noise / std::sqrt(n));
+  EXPECT_NEAR(stddev, noisy.laser_range_noise, 0.1 * noisy.laser_range_noise);
+}
+
+TEST(Laser, SameSeedSameScan) {
+  SimParams params;
+  auto world = test::wallWorld(2.0);
+  LaserSimulator a(params, Eigen::Vector3d::Zero(), world),
+      b(params, Eigen::Vector3d::Zero(), world);
+  EXPECT_EQ(a.scan(Eigen::Vector3d::Zero()).ranges, b.scan(Eigen::Vector3d::Zero()).ranges);
+}
+
+}  // namespace
+}  // namespace wheelchair_sim

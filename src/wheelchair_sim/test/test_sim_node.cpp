@@ -1,0 +1,206 @@
+// rostest client of the simulator node, in the room world of test/worlds (free for
+// x in [-2, 8], y in [-3, 3]), chair starting at the origin facing +x, ideal dynamics.
+#include <wheelchair_sim/SetPose.h>
+
+#include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Bool.h>
+#include <wheelchair_description/chair_params.h>
+#include <wheelchair_msgs/WheelTorques.h>
+
+#include <atomic>
+#include <cmath>
+#include <functional>
+#include <mutex>
+#include <thread>
+
+namespace {
+
+constexpr double kFrontWall = 8.0;
+
+/// Spins until `done` or `wall_seconds` of wall time pass.
+bool waitFor(const std::function<bool()>& done, double wall_seconds) {
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(wall_seconds);
+  while (ros::ok() && ros::WallTime::now() < end) {
+    ros::spinOnce();
+    if (done()) return true;
+    ros::WallDuration(0.002).sleep();
+  }
+  return false;
+}
+
+/// Keeps publishing the same torques (a controller at 50 Hz wall time) while alive.
+class TorquePublisher {
+ public:
+  TorquePublisher(ros::NodeHandle& nh, double right, double left)
+      : pub_(nh.advertise<wheelchair_msgs::WheelTorques>("wheel_torques", 10)) {
+    thread_ = std::thread([this, right, left] {
+      while (running_ && ros::ok()) {
+        wheelchair_msgs::WheelTorques m;
+        m.right = right;
+        m.left = left;
+        pub_.publish(m);
+        ros::WallDuration(0.02).sleep();
+      }
+    });
+  }
+  ~TorquePublisher() {
+    running_ = false;
+    thread_.join();
+  }
+
+ private:
+  ros::Publisher pub_;
+  std::atomic<bool> running_{true};
+  std::thread thread_;
+};
+
+struct Latest {
+  std::mutex mutex;
+  std::vector<nav_msgs::Odometry> truth;
+  nav_msgs::Odometry odom;
+  sensor_msgs::LaserScan scan;
+  int scans = 0, odoms = 0;
+  bool collision = false, collision_known = false;
+};
+
+class SimNode : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    subs_.push_back(nh_.subscribe<nav_msgs::Odometry>(
+        "sim/ground_truth", 100,
+        [this](const nav_msgs::Odometry::ConstPtr& m) { latest_.truth.push_back(*m); }));
+    subs_.push_back(nh_.subscribe<nav_msgs::Odometry>(
+        "odom", 10, [this](const nav_msgs::Odometry::ConstPtr& m) {
+          latest_.odom = *m;
+          ++latest_.odoms;
+        }));
+    subs_.push_back(nh_.subscribe<sensor_msgs::LaserScan>(
+        "scan", 10, [this](const sensor_msgs::LaserScan::ConstPtr& m) {
+          latest_.scan = *m;
+          ++latest_.scans;
+        }));
+    subs_.push_back(nh_.subscribe<std_msgs::Bool>("sim/collision", 10,
+                                                  [this](const std_msgs::Bool::ConstPtr& m) {
+                                                    latest_.collision = m->data;
+                                                    latest_.collision_known = true;
+                                                  }));
+    ASSERT_TRUE(waitFor([this] { return !latest_.truth.empty() && latest_.odoms > 0; }, 20.0))
+        << "no /sim/ground_truth or /odom from the simulator";
+  }
+
+  const nav_msgs::Odometry& truth() const { return latest_.truth.back(); }
+
+  ros::NodeHandle nh_;
+  std::vector<ros::Subscriber> subs_;
+  Latest latest_;
+};
+
+// Equal torques: v grows by a dt with a = 2 tau / r / (M_T + 2 m_w + 2 I_w / r^2).
+TEST_F(SimNode, TorquesDriveTheChairAsTheModelPredicts) {
+  const auto chair =
+      wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath());
+  const double tau = 8.0;
+  const double a = 2.0 * tau / chair.wheel_radius /
+                   (chair.total_mass + 2 * chair.wheel_mass +
+                    2 * chair.wheel_inertia / std::pow(chair.wheel_radius, 2));
+  TorquePublisher torques(nh_, tau, tau);
+  ASSERT_TRUE(waitFor([this] { return truth().twist.twist.linear.x > 0.05; }, 20.0));
+  const nav_msgs::Odometry first = truth();
+  ASSERT_TRUE(
+      waitFor([&] { return (truth().header.stamp - first.header.stamp).toSec() > 2.0; }, 30.0));
+  const nav_msgs::Odometry last = truth();
+  const double dt = (last.header.stamp - first.header.stamp).toSec();
+  const double v0 = first.twist.twist.linear.x;
+  EXPECT_NEAR(last.twist.twist.linear.x - v0, a * dt, 1e-6);
+  EXPECT_NEAR(last.pose.pose.position.x - first.pose.pose.position.x, v0 * dt + 0.5 * a * dt * dt,
+              1e-6);
+  EXPECT_NEAR(last.pose.pose.position.y, 0.0, 1e-9);
+  EXPECT_EQ(last.header.frame_id, "map");
+  EXPECT_EQ(last.child_frame_id, "base_link");
+  // Error-free odometry (this test's parameters) agrees with the truth.
+  EXPECT_NEAR(latest_.odom.pose.pose.position.x, truth().pose.pose.position.x, 0.05);
+}
+
+TEST_F(SimNode, ScansArriveWithTheSicksHeaderAndSeeTheFrontWall) {
+  ASSERT_TRUE(waitFor([this] { return latest_.scans >= 3; }, 20.0));
+  const sensor_msgs::LaserScan& s = latest_.scan;
+  EXPECT_EQ(s.header.frame_id, "laser");
+  ASSERT_EQ(s.ranges.size(), 361u);
+  EXPECT_NEAR(s.angle_min, -M_PI / 2, 1e-6);
+  EXPECT_NEAR(s.angle_max, M_PI / 2, 1e-6);
+  EXPECT_NEAR(s.angle_increment, M_PI / 360, 1e-7);
+  EXPECT_NEAR(s.angle_min + s.angle_increment * (s.ranges.size() - 1), s.angle_max, 1e-6);
+  EXPECT_GT(s.header.stamp.toSec(), 0.0);
+  const auto chair =
+      wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath());
+  // Beam 180 looks straight ahead from the laser at x = laser_x to the wall at x = 8.
+  EXPECT_NEAR(s.ranges[180], kFrontWall - chair.laser_x, 0.06);
+  // Beam 0 looks right (-y) to the wall at y = -3.
+  EXPECT_NEAR(s.ranges[0], 3.0, 0.06);
+}
+
+TEST_F(SimNode, PushIntoAWallRaisesTheCollisionFlagAndStopsTheChair) {
+  ASSERT_TRUE(waitFor([this] { return latest_.collision_known; }, 10.0));
+  EXPECT_FALSE(latest_.collision);
+  TorquePublisher torques(nh_, 30.0, 30.0);
+  ASSERT_TRUE(waitFor([this] { return latest_.collision; }, 60.0)) << "no collision reported";
+  const double x = truth().pose.pose.position.x;
+  ASSERT_TRUE(waitFor(
+      [&] { return latest_.truth.size() > 20 && truth().twist.twist.linear.x == 0.0; }, 10.0));
+  EXPECT_GT(x + 0.30, kFrontWall - 0.1);  // the footprint front reached the wall
+  const double held = truth().pose.pose.position.x;
+  const size_t n = latest_.truth.size();
+  ASSERT_TRUE(waitFor([&] { return latest_.truth.size() > n + 10; }, 10.0));
+  EXPECT_EQ(truth().pose.pose.position.x, held) << "the chair must be held after a collision";
+  EXPECT_LT(held + 0.30, kFrontWall);
+}
+
+TEST_F(SimNode, TeleportMovesTheTruthNotTheOdometryAndResetRestartsOdometry) {
+  ros::ServiceClient teleport = nh_.serviceClient<wheelchair_sim::SetPose>("sim/teleport");
+  ros::ServiceClient reset = nh_.serviceClient<wheelchair_sim::SetPose>("sim/reset");
+  ASSERT_TRUE(teleport.waitForExistence(ros::Duration(10.0)));
+  wheelchair_sim::SetPose srv;
+  srv.request.x = 3.0;
+  srv.request.y = 1.0;
+  srv.request.yaw = 1.0;
+  ASSERT_TRUE(teleport.call(srv));
+  EXPECT_TRUE(srv.response.success) << srv.response.message;
+  const size_t n = latest_.truth.size();
+  ASSERT_TRUE(waitFor([&] { return latest_.truth.size() > n + 2; }, 10.0));
+  EXPECT_NEAR(truth().pose.pose.position.x, 3.0, 1e-9);
+  EXPECT_NEAR(truth().pose.pose.position.y, 1.0, 1e-9);
+  EXPECT_NEAR(2.0 * std::atan2(truth().pose.pose.orientation.z, truth().pose.pose.orientation.w),
+              1.0, 1e-9);
+  EXPECT_NEAR(latest_.odom.pose.pose.position.x, 0.0, 1e-9) << "odometry must not see a kidnap";
+
+  srv.request.x = kFrontWall;  // inside the wall
+  ASSERT_TRUE(teleport.call(srv));
+  EXPECT_FALSE(srv.response.success);
+  EXPECT_NEAR(truth().pose.pose.position.x, 3.0, 1e-9);
+
+  {
+    TorquePublisher torques(nh_, 10.0, 10.0);
+    ASSERT_TRUE(waitFor([this] { return latest_.odom.pose.pose.position.x > 0.1; }, 20.0));
+  }
+  srv.request.x = -1.0;
+  srv.request.y = 0.0;
+  srv.request.yaw = 0.0;
+  ASSERT_TRUE(reset.call(srv));
+  EXPECT_TRUE(srv.response.success);
+  const int odoms = latest_.odoms;
+  ASSERT_TRUE(waitFor([&] { return latest_.odoms > odoms + 2; }, 10.0));
+  EXPECT_NEAR(latest_.odom.pose.pose.position.x, 0.0, 1e-3);
+  EXPECT_NEAR(truth().pose.pose.position.x, -1.0, 1e-3);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_sim_node");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
