@@ -170,10 +170,12 @@ def start_description(demo):
 def demo_pose(demo):
     """The chair's pose for the demo: a named place of the world (x, y, yaw)."""
     places = ROOT / "test" / "worlds" / f"{demo.args.world}.places.yaml"
-    for place in yaml.safe_load(places.read_text())["places"]:
-        if place["name"] == demo.args.place:
+    listed = yaml.safe_load(places.read_text())["places"]
+    for place in listed:
+        if place["name"] == demo.args.place or demo.args.place is None:
             return place
-    raise DemoError(f"no place named '{demo.args.place}' in {places}")
+    raise DemoError(f"no place named '{demo.args.place}' in {places} (there are: "
+                    f"{', '.join(p['name'] for p in listed)})")
 
 
 def place_chair(demo):
@@ -288,7 +290,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", required=True, help="output directory (emptied first)")
     parser.add_argument("--world", default="flat", help="world under test/worlds (default: flat)")
-    parser.add_argument("--place", default="living_centre", help="named place where the chair stands")
+    parser.add_argument("--place", help="named place where the chair stands (default: the world's first)")
     parser.add_argument("--snapshot-seconds", type=float, default=4.0, help="time rviz gets to fill its displays")
     args = parser.parse_args()
     if subprocess.run(["rospack", "find", "wheelchair_bringup"], capture_output=True).returncode != 0:
