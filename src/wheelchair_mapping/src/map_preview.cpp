@@ -1,0 +1,29 @@
+#include <wheelchair_mapping/map_preview.h>
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <stdexcept>
+
+namespace wheelchair_mapping {
+
+void savePreviewPng(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& png_path) {
+  const int w = static_cast<int>(grid.getSizeX());
+  const int h = static_cast<int>(grid.getSizeY());
+  cv::Mat image(h, w, CV_8UC1);
+  const auto& raw = grid.getRawMap();
+  for (int iy = 0; iy < h; ++iy) {
+    uint8_t* row = image.ptr<uint8_t>(h - 1 - iy);
+    for (int ix = 0; ix < w; ++ix) {
+      row[ix] = mrpt::maps::COccupancyGridMap2D::l2p_255(raw[static_cast<size_t>(iy) * w + ix]);
+    }
+  }
+  bool ok = false;
+  try {
+    ok = cv::imwrite(png_path, image);
+  } catch (const cv::Exception&) {
+    ok = false;
+  }
+  if (!ok) throw std::runtime_error(png_path + ": cannot write the preview image");
+}
+
+}  // namespace wheelchair_mapping
