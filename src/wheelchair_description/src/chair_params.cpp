@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
+#include <utility>
 
 namespace wheelchair_description {
 namespace {
@@ -65,17 +66,18 @@ double ChairParams::circumscribedRadius() const {
 }
 
 void validate(const ChairParams& p) {
-  requirePositive(p.total_mass, "total_mass");
-  requirePositive(p.wheel_mass, "wheel_mass");
-  requirePositive(p.wheel_inertia, "wheel_inertia");
-  requirePositive(p.wheel_inertia_diam, "wheel_inertia_diam");
-  requirePositive(p.body_inertia, "body_inertia");
-  requirePositive(p.wheel_radius, "wheel_radius");
-  requirePositive(p.half_track, "half_track");
-  requirePositive(p.max_wheel_torque, "max_wheel_torque");
-  requirePositive(p.max_speed, "max_speed");
-  requirePositive(p.width, "width");
-  requirePositive(p.length, "length");
+  const std::pair<double, const char*> positive[] = {{p.total_mass, "total_mass"},
+                                                     {p.wheel_mass, "wheel_mass"},
+                                                     {p.wheel_inertia, "wheel_inertia"},
+                                                     {p.wheel_inertia_diam, "wheel_inertia_diam"},
+                                                     {p.body_inertia, "body_inertia"},
+                                                     {p.wheel_radius, "wheel_radius"},
+                                                     {p.half_track, "half_track"},
+                                                     {p.max_wheel_torque, "max_wheel_torque"},
+                                                     {p.max_speed, "max_speed"},
+                                                     {p.width, "width"},
+                                                     {p.length, "length"}};
+  for (const auto& [value, name] : positive) requirePositive(value, name);
   requireFinite(p.cm_offset, "cm_offset");
   if (!std::isfinite(p.lookahead) || p.lookahead == 0.0)
     throw std::invalid_argument("chair parameter 'lookahead' must be finite and non-zero (eq. 19)");
