@@ -65,13 +65,15 @@ class DescriptionPublisherNodelet : public nodelet::Nodelet {
       }
       it->second.position = msg->position[i];
     }
+    last_message_ = ros::Time::now();
     publishMovingJoints(msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp);
   }
 
-  /// Keeps the wheels in the tree while no joint_states arrive (at their last angles).
+  /// Keeps the wheels in the tree while no joint_states arrive (at their last angles, stamped
+  /// now), whatever the stamps of the messages are.
   void onTimer(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
-    if (last_stamp_.isZero() || now - last_stamp_ >= period_) publishMovingJoints(now);
+    if (last_message_.isZero() || now - last_message_ >= period_) publishMovingJoints(now);
   }
 
   void publishMovingJoints(const ros::Time& stamp) {
@@ -95,7 +97,8 @@ class DescriptionPublisherNodelet : public nodelet::Nodelet {
   ros::Subscriber joint_sub_;
   ros::Timer timer_;
   ros::Duration period_{0.05};
-  ros::Time last_stamp_;
+  ros::Time last_stamp_;    ///< stamp of the last wheel transforms sent
+  ros::Time last_message_;  ///< arrival of the last joint_states
 };
 
 }  // namespace wheelchair_description
