@@ -1,0 +1,60 @@
+// The ROS face of the base driver: WheelTorques in, CAN frames out through a transport;
+// /odom, tf odom->base_link, /joint_states, diagnostics and a status out; e-stop in.
+#pragma once
+
+#include <wheelchair_base_driver/base_driver_core.h>
+#include <wheelchair_base_driver/emulated_motor_controller.h>
+#include <wheelchair_base_driver/transport.h>
+
+#include <diagnostic_msgs/DiagnosticStatus.h>
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <nodelet/nodelet.h>
+#include <ros/ros.h>
+#include <std_msgs/Bool.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <wheelchair_msgs/WheelTorques.h>
+
+#include <memory>
+#include <mutex>
+#include <string>
+
+namespace wheelchair_base_driver {
+
+class BaseDriverNodelet : public nodelet::Nodelet {
+ public:
+  ~BaseDriverNodelet() override;
+
+ private:
+  void onInit() override;
+  void onTorques(const wheelchair_msgs::WheelTorques::ConstPtr& msg);
+  void onEstopTopic(const std_msgs::Bool::ConstPtr& msg);
+  bool onEstopService(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
+  bool onClearEstopService(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
+  void onTimer(const ros::TimerEvent& event);
+  void publishOdometry(const ros::Time& stamp);
+  void publishStatus();
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  std::mutex mutex_;  // guards the core and the emulated controller
+  std::shared_ptr<CanTransport> transport_;
+  std::unique_ptr<BaseDriverCore> core_;
+  // Stand-alone fake mode: a controller with a trivial plant on the same fake bus.
+  std::shared_ptr<CanTransport> emulated_port_;
+  std::unique_ptr<SimpleWheelPlant> emulated_plant_;
+  std::unique_ptr<EmulatedMotorController> emulated_controller_;
+  double last_plant_time_ = -1.0;
+
+  ros::Subscriber torque_sub_, estop_sub_;
+  ros::Publisher odom_pub_, joint_pub_, status_pub_;
+  ros::ServiceServer estop_srv_, clear_srv_;
+  ros::Timer timer_;
+  std::unique_ptr<tf2_ros::TransformBroadcaster> tf_;
+  std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
+  std::string odom_frame_, base_frame_, left_joint_, right_joint_;
+  bool publish_tf_ = true;
+  double last_odom_stamp_ = -1.0;
+  DriverState last_logged_state_ = DriverState::kNoController;
+};
+
+}  // namespace wheelchair_base_driver

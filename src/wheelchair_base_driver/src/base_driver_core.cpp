@@ -1,0 +1,229 @@
+#include <wheelchair_base_driver/base_driver_core.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace wheelchair_base_driver {
+
+using protocol::ControllerState;
+
+void validate(const DriverConfig& c) {
+  const auto positive = [](double v, const char* name) {
+    if (!(std::isfinite(v) && v > 0)) {
+      throw std::invalid_argument(std::string("DriverConfig: ") + name + " must be finite and > 0");
+    }
+  };
+  positive(c.geometry.wheel_radius, "wheel_radius");
+  positive(c.geometry.half_track, "half_track");
+  positive(c.geometry.counts_per_rev, "counts_per_rev");
+  positive(c.geometry.max_wheel_rate, "max_wheel_rate");
+  positive(c.max_torque, "max_torque");
+  positive(c.command_period, "command_period");
+  positive(c.heartbeat_period, "heartbeat_period");
+  positive(c.command_timeout, "command_timeout");
+  positive(c.controller_timeout, "controller_timeout");
+  if (c.max_torque > protocol::kMaxEncodableTorque) {
+    throw std::invalid_argument("DriverConfig: max_torque exceeds the protocol's 327.67 N m");
+  }
+}
+
+const char* driverStateName(DriverState s) {
+  switch (s) {
+    case DriverState::kNoController:
+      return "no_motor_controller";
+    case DriverState::kControllerLost:
+      return "motor_controller_heartbeat_lost";
+    case DriverState::kControllerFault:
+      return "motor_controller_fault";
+    case DriverState::kEstop:
+      return "estop";
+    case DriverState::kWaitingForCommand:
+      return "waiting_for_command";
+    case DriverState::kCommandTimeout:
+      return "command_timeout";
+    case DriverState::kBraking:
+      return "braking";
+    case DriverState::kDriving:
+      return "driving";
+  }
+  return "?";
+}
+
+bool isFault(DriverState s) {
+  return s == DriverState::kNoController || s == DriverState::kControllerLost ||
+         s == DriverState::kControllerFault || s == DriverState::kEstop;
+}
+
+const char* torqueVerdictName(TorqueVerdict v) {
+  switch (v) {
+    case TorqueVerdict::kAccepted:
+      return "accepted";
+    case TorqueVerdict::kNonFinite:
+      return "non-finite torque";
+    case TorqueVerdict::kOutOfRange:
+      return "torque beyond max_torque";
+    case TorqueVerdict::kStale:
+      return "stale message (header stamp older than command_timeout)";
+  }
+  return "?";
+}
+
+BaseDriverCore::BaseDriverCore(const DriverConfig& config, CanTransport& transport)
+    : config_(config), transport_(transport), odometry_(config.geometry) {
+  validate(config_);
+}
+
+TorqueVerdict BaseDriverCore::onTorqueMessage(double left, double right, bool brake, double stamp,
+                                              double now) {
+  ++counters_.torque_messages;
+  TorqueVerdict verdict = TorqueVerdict::kAccepted;
+  if (!std::isfinite(left) || !std::isfinite(right)) {
+    verdict = TorqueVerdict::kNonFinite;
+    ++counters_.rejected_non_finite;
+  } else if (std::abs(left) > config_.max_torque || std::abs(right) > config_.max_torque) {
+    verdict = TorqueVerdict::kOutOfRange;
+    ++counters_.rejected_out_of_range;
+  } else if (stamp > 0 && now - stamp >= config_.command_timeout) {
+    verdict = TorqueVerdict::kStale;
+    ++counters_.rejected_stale;
+  }
+  if (verdict == TorqueVerdict::kAccepted) {
+    has_message_ = true;
+    last_message_time_ = now;
+    message_left_ = left;
+    message_right_ = right;
+    message_brake_ = brake;
+  } else {
+    // A rejected message is a stop request: the previous command must not continue.
+    last_rejection_ = torqueVerdictName(verdict);
+    has_message_ = false;
+    block_time_ = now;
+  }
+  update(now, true);
+  return verdict;
+}
+
+void BaseDriverCore::engageEstop(double now) {
+  if (!estop_) ++counters_.estops;
+  estop_ = true;
+  update(now, true);
+}
+
+void BaseDriverCore::clearEstop(double now) {
+  estop_ = false;
+  block_time_ = now;
+  update(now, true);
+}
+
+void BaseDriverCore::spinOnce(double now) {
+  rx_.clear();
+  transport_.receive(rx_);
+  for (const CanFrame& frame : rx_) processFrame(frame, now);
+  update(now, false);
+}
+
+void BaseDriverCore::processFrame(const CanFrame& frame, double now) {
+  if (frame.error) {
+    ++counters_.error_frames;
+    last_bus_error_ = decodeErrorFrame(frame).description;
+    return;
+  }
+  ++counters_.frames_received;
+  protocol::Message message;
+  const protocol::DecodeError error = protocol::decode(frame, &message);
+  if (error != protocol::DecodeError::kNone) {
+    ++counters_.decode_errors[static_cast<std::size_t>(error)];
+    return;
+  }
+  const double stamp = frame.stamp > 0 ? frame.stamp : now;
+  if (const auto* counts = std::get_if<protocol::EncoderCounts>(&message)) {
+    handleEncoder(*counts, stamp);
+  } else if (const auto* status = std::get_if<protocol::ControllerStatus>(&message)) {
+    mc_state_ = status->state;
+    mc_faults_ = status->faults;
+  } else if (const auto* heartbeat = std::get_if<protocol::ControllerHeartbeat>(&message)) {
+    if (!has_heartbeat_ || now - last_heartbeat_time_ >= config_.controller_timeout) {
+      encoder_sequence_.reset();  // after a silence the counter restarts anywhere
+    }
+    has_heartbeat_ = true;
+    last_heartbeat_time_ = now;
+    mc_state_ = heartbeat->state;
+  } else {
+    ++counters_.foreign_commands;  // our own message types, sent by someone else
+  }
+}
+
+void BaseDriverCore::handleEncoder(const protocol::EncoderCounts& counts, double stamp) {
+  std::uint32_t lost = 0;
+  switch (encoder_sequence_.accept(counts.sequence, &lost)) {
+    case SequenceTracker::Verdict::kDuplicate:
+      ++counters_.encoder_duplicated;
+      return;
+    case SequenceTracker::Verdict::kReordered:
+      ++counters_.encoder_reordered;
+      return;
+    case SequenceTracker::Verdict::kInOrder:
+      counters_.encoder_lost += lost;
+      break;
+  }
+  if (!odometry_.update(counts, stamp)) ++counters_.encoder_implausible;
+}
+
+DriverState BaseDriverCore::evaluate(double now) {
+  if (estop_) return DriverState::kEstop;
+  if (!has_heartbeat_) return DriverState::kNoController;
+  if (now - last_heartbeat_time_ >= config_.controller_timeout) return DriverState::kControllerLost;
+  if (mc_faults_ != 0 || mc_state_ == ControllerState::kFault) return DriverState::kControllerFault;
+  if (!has_message_ || last_message_time_ <= block_time_) return DriverState::kWaitingForCommand;
+  if (now - last_message_time_ >= config_.command_timeout) return DriverState::kCommandTimeout;
+  return message_brake_ ? DriverState::kBraking : DriverState::kDriving;
+}
+
+void BaseDriverCore::update(double now, bool force_send) {
+  const DriverState next = evaluate(now);
+  if (isFault(next)) block_time_ = now;
+  if (next != state_) {
+    if (next == DriverState::kCommandTimeout) ++counters_.command_timeouts;
+    if (next == DriverState::kControllerLost) ++counters_.heartbeat_losses;
+    if (next == DriverState::kControllerFault) ++counters_.controller_faults;
+    force_send = true;  // a change of state goes on the bus at once
+  }
+  state_ = next;
+  if (force_send || now - last_command_time_ >= config_.command_period) sendCommand(now);
+  if (now - last_heartbeat_sent_ >= config_.heartbeat_period) sendHeartbeat(now);
+}
+
+void BaseDriverCore::sendCommand(double now) {
+  const bool drive = state_ == DriverState::kDriving;
+  protocol::TorqueCommand command;
+  command.left = drive ? message_left_ : 0.0;
+  command.right = drive ? message_right_ : 0.0;
+  command.enable = drive;
+  command.brake = !drive;
+  command.sequence = command_sequence_++;
+  last_command_time_ = now;
+  last_sent_ = command;
+  if (transport_.send(protocol::encode(command))) {
+    ++counters_.frames_sent;
+  } else {
+    ++counters_.send_failures;
+  }
+}
+
+void BaseDriverCore::sendHeartbeat(double now) {
+  using protocol::DriverHeartbeatState;
+  protocol::DriverHeartbeat heartbeat;
+  heartbeat.state = state_ == DriverState::kDriving ? DriverHeartbeatState::kDriving
+                    : state_ == DriverState::kEstop ? DriverHeartbeatState::kEstop
+                    : isFault(state_)               ? DriverHeartbeatState::kFault
+                                                    : DriverHeartbeatState::kBraking;
+  heartbeat.counter = heartbeat_counter_++;
+  last_heartbeat_sent_ = now;
+  if (transport_.send(protocol::encode(heartbeat))) {
+    ++counters_.frames_sent;
+  } else {
+    ++counters_.send_failures;
+  }
+}
+
+}  // namespace wheelchair_base_driver

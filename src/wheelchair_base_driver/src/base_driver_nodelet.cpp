@@ -1,0 +1,262 @@
+#include <wheelchair_base_driver/base_driver_nodelet.h>
+
+#include <wheelchair_base_driver/fake_bus.h>
+#include <wheelchair_base_driver/transport_factory.h>
+#include <wheelchair_base_driver/udp_transport.h>
+#include <wheelchair_description/chair_params.h>
+
+#include <geometry_msgs/TransformStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/JointState.h>
+#include <pluginlib/class_list_macros.hpp>
+
+#include <cmath>
+
+namespace wheelchair_base_driver {
+
+namespace {
+double rosNow() { return ros::Time::now().toSec(); }
+
+geometry_msgs::Quaternion yawToQuaternion(double yaw) {
+  geometry_msgs::Quaternion q;
+  q.z = std::sin(yaw / 2);
+  q.w = std::cos(yaw / 2);
+  return q;
+}
+}  // namespace
+
+BaseDriverNodelet::~BaseDriverNodelet() {
+  timer_.stop();
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (core_) core_->engageEstop(rosNow());  // leave the chair braked
+}
+
+void BaseDriverNodelet::onInit() {
+  ros::NodeHandle& nh = getNodeHandle();
+  ros::NodeHandle& pnh = getPrivateNodeHandle();
+
+  const std::string chair_file =
+      pnh.param<std::string>("chair_params", wheelchair_description::defaultChairParamsPath());
+  const wheelchair_description::ChairParams chair =
+      wheelchair_description::loadChairParams(chair_file);
+  DriverConfig config;
+  config.geometry.wheel_radius = chair.wheel_radius;
+  config.geometry.half_track = chair.half_track;
+  config.geometry.counts_per_rev = pnh.param("counts_per_rev", 4096.0);
+  config.geometry.max_wheel_rate = pnh.param("max_wheel_rate", 40.0);
+  config.max_torque = pnh.param("max_torque", chair.max_wheel_torque);
+  config.command_period = 1.0 / pnh.param("command_rate", 100.0);
+  config.command_timeout = pnh.param("command_timeout", 0.1);
+  config.controller_timeout = pnh.param("controller_timeout", 0.2);
+  validate(config);
+
+  TransportOptions options;
+  options.kind = pnh.param<std::string>("transport", "socketcan");
+  options.interface = pnh.param<std::string>("interface", "can0");
+  options.udp_local_port = pnh.param("udp_local_port", 47110);
+  options.udp_remote_port = pnh.param("udp_remote_port", 47111);
+  options.fake_bus = pnh.param<std::string>("fake_bus", "wheelchair_can");
+  options.filters = driverReceiveFilters();
+  options.clock = rosNow;
+  transport_ = makeTransport(options);
+  if (auto* udp = dynamic_cast<UdpTransport*>(transport_.get())) {
+    pnh.setParam("udp_bound_port", static_cast<int>(udp->localPort()));
+  }
+  core_ = std::make_unique<BaseDriverCore>(config, *transport_);
+
+  if (options.kind == "fake" && pnh.param("emulate_controller", true)) {
+    emulated_port_ = FakeBus::named(options.fake_bus)->connect("emulated_motor_controller");
+    emulated_plant_ = std::make_unique<SimpleWheelPlant>(pnh.param("emulated_wheel_inertia", 2.0),
+                                                         pnh.param("emulated_wheel_damping", 4.0));
+    EmulatedControllerConfig mc;
+    mc.counts_per_rev = config.geometry.counts_per_rev;
+    mc.max_torque = config.max_torque;
+    emulated_controller_ =
+        std::make_unique<EmulatedMotorController>(mc, *emulated_port_, *emulated_plant_);
+    NODELET_INFO("fake transport with an emulated motor controller and a trivial wheel plant");
+  }
+
+  odom_frame_ = pnh.param<std::string>("odom_frame", "odom");
+  base_frame_ = pnh.param<std::string>("base_frame", "base_link");
+  left_joint_ = pnh.param<std::string>("left_wheel_joint", "left_wheel_joint");
+  right_joint_ = pnh.param<std::string>("right_wheel_joint", "right_wheel_joint");
+  publish_tf_ = pnh.param("publish_tf", true);
+
+  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
+  joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+  status_pub_ = pnh.advertise<diagnostic_msgs::DiagnosticStatus>("status", 10, true);
+  tf_ = std::make_unique<tf2_ros::TransformBroadcaster>();
+  diagnostics_ = std::make_unique<diagnostic_updater::Updater>(nh, pnh, getName());
+  diagnostics_->setHardwareID(transport_->describe());
+  diagnostics_->add("CAN base driver", this, &BaseDriverNodelet::diagnose);
+
+  torque_sub_ = nh.subscribe("wheel_torques", 10, &BaseDriverNodelet::onTorques, this,
+                             ros::TransportHints().tcpNoDelay());
+  estop_sub_ = nh.subscribe("estop", 10, &BaseDriverNodelet::onEstopTopic, this);
+  estop_srv_ = pnh.advertiseService("estop", &BaseDriverNodelet::onEstopService, this);
+  clear_srv_ = pnh.advertiseService("clear_estop", &BaseDriverNodelet::onClearEstopService, this);
+  timer_ = nh.createTimer(ros::Duration(1.0 / pnh.param("spin_rate", 500.0)),
+                          &BaseDriverNodelet::onTimer, this);
+  NODELET_INFO("base driver on %s: r=%.3f m, b=%.3f m, max torque %.1f N m, watchdogs %.0f/%.0f ms",
+               transport_->describe().c_str(), config.geometry.wheel_radius,
+               config.geometry.half_track, config.max_torque, config.command_timeout * 1e3,
+               config.controller_timeout * 1e3);
+}
+
+void BaseDriverNodelet::onTorques(const wheelchair_msgs::WheelTorques::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const TorqueVerdict verdict = core_->onTorqueMessage(msg->left, msg->right, msg->brake,
+                                                       msg->header.stamp.toSec(), rosNow());
+  if (verdict != TorqueVerdict::kAccepted) {
+    NODELET_WARN_THROTTLE(1.0, "wheel torques rejected (%s): left %g right %g; braking",
+                          torqueVerdictName(verdict), msg->left, msg->right);
+  }
+}
+
+void BaseDriverNodelet::onEstopTopic(const std_msgs::Bool::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (msg->data) {
+    if (!core_->estopLatched()) NODELET_ERROR("emergency stop engaged (topic)");
+    core_->engageEstop(rosNow());
+  } else if (core_->estopLatched()) {
+    NODELET_WARN_THROTTLE(1.0, "estop=false ignored: the e-stop latches; call ~clear_estop");
+  }
+}
+
+bool BaseDriverNodelet::onEstopService(std_srvs::Trigger::Request&,
+                                       std_srvs::Trigger::Response& res) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  core_->engageEstop(rosNow());
+  NODELET_ERROR("emergency stop engaged (service)");
+  res.success = true;
+  res.message = "e-stop latched; call clear_estop to release";
+  return true;
+}
+
+bool BaseDriverNodelet::onClearEstopService(std_srvs::Trigger::Request&,
+                                            std_srvs::Trigger::Response& res) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  core_->clearEstop(rosNow());
+  NODELET_WARN("emergency stop cleared; motion resumes with the next torque message");
+  res.success = true;
+  res.message = "e-stop cleared";
+  return true;
+}
+
+void BaseDriverNodelet::onTimer(const ros::TimerEvent&) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const double now = rosNow();
+  if (emulated_controller_) {
+    emulated_controller_->step(now);
+    if (last_plant_time_ >= 0 && now > last_plant_time_)
+      emulated_plant_->advance(now - last_plant_time_);
+    last_plant_time_ = now;
+  }
+  core_->spinOnce(now);
+  const DriverState state = core_->state();
+  if (state != last_logged_state_) {
+    if (isFault(state)) {
+      NODELET_ERROR("base driver: %s (controller faults: %s) - braking", driverStateName(state),
+                    protocol::describeFaults(core_->controllerFaults()).c_str());
+    } else {
+      NODELET_INFO("base driver: %s", driverStateName(state));
+    }
+    last_logged_state_ = state;
+    publishStatus();
+  }
+  const OdometryState& odo = core_->odometry();
+  if (odo.stamp > last_odom_stamp_) {
+    last_odom_stamp_ = odo.stamp;
+    publishOdometry(ros::Time(odo.stamp));
+  }
+  diagnostics_->update();
+}
+
+void BaseDriverNodelet::publishOdometry(const ros::Time& stamp) {
+  const OdometryState& odo = core_->odometry();
+  nav_msgs::Odometry msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = odom_frame_;
+  msg.child_frame_id = base_frame_;
+  msg.pose.pose.position.x = odo.x;
+  msg.pose.pose.position.y = odo.y;
+  msg.pose.pose.orientation = yawToQuaternion(odo.theta);
+  msg.twist.twist.linear.x = odo.v;
+  msg.twist.twist.angular.z = odo.omega;
+  // Wheel odometry: x, y, yaw drift slowly; z, roll, pitch are not observed (large variance).
+  const double kPose[6] = {1e-3, 1e-3, 1e6, 1e6, 1e6, 1e-2};
+  const double kTwist[6] = {1e-3, 1e-3, 1e6, 1e6, 1e6, 1e-2};
+  for (int i = 0; i < 6; ++i) {
+    msg.pose.covariance[i * 7] = kPose[i];
+    msg.twist.covariance[i * 7] = kTwist[i];
+  }
+  odom_pub_.publish(msg);
+  if (publish_tf_) {
+    geometry_msgs::TransformStamped t;
+    t.header = msg.header;
+    t.child_frame_id = base_frame_;
+    t.transform.translation.x = odo.x;
+    t.transform.translation.y = odo.y;
+    t.transform.rotation = msg.pose.pose.orientation;
+    tf_->sendTransform(t);
+  }
+  sensor_msgs::JointState joints;
+  joints.header.stamp = stamp;
+  joints.name = {left_joint_, right_joint_};
+  joints.position = {odo.left_angle, odo.right_angle};
+  joints.velocity = {odo.left_rate, odo.right_rate};
+  joint_pub_.publish(joints);
+}
+
+void BaseDriverNodelet::publishStatus() {
+  diagnostic_msgs::DiagnosticStatus status;
+  diagnostic_updater::DiagnosticStatusWrapper wrapper;
+  diagnose(wrapper);
+  status = wrapper;
+  status.name = getName();
+  status.hardware_id = transport_->describe();
+  status_pub_.publish(status);
+}
+
+void BaseDriverNodelet::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
+  const DriverState state = core_->state();
+  const TransportStats bus = transport_->stats();
+  const DriverCounters& n = core_->counters();
+  if (isFault(state) || bus.state == BusState::kBusOff || bus.state == BusState::kClosed) {
+    s.summary(diagnostic_msgs::DiagnosticStatus::ERROR, driverStateName(state));
+  } else if (state == DriverState::kCommandTimeout || bus.state != BusState::kActive) {
+    s.summary(diagnostic_msgs::DiagnosticStatus::WARN, driverStateName(state));
+  } else {
+    s.summary(diagnostic_msgs::DiagnosticStatus::OK, driverStateName(state));
+  }
+  s.add("state", driverStateName(state));
+  s.add("estop latched", core_->estopLatched());
+  s.add("braking", core_->lastCommand().brake);
+  s.add("commanded left [N m]", core_->lastCommand().left);
+  s.add("commanded right [N m]", core_->lastCommand().right);
+  s.add("controller faults", protocol::describeFaults(core_->controllerFaults()));
+  s.add("bus state", busStateName(bus.state));
+  s.add("bus last error", bus.last_error.empty() ? core_->lastBusError() : bus.last_error);
+  s.add("frames sent", n.frames_sent);
+  s.add("send failures", n.send_failures);
+  s.add("frames received", n.frames_received);
+  s.add("error frames", n.error_frames);
+  std::uint64_t decode_errors = 0;
+  for (std::size_t i = 1; i < n.decode_errors.size(); ++i) decode_errors += n.decode_errors[i];
+  s.add("decode errors", decode_errors);
+  s.add("torque messages", n.torque_messages);
+  s.add("rejected non-finite", n.rejected_non_finite);
+  s.add("rejected out of range", n.rejected_out_of_range);
+  s.add("rejected stale", n.rejected_stale);
+  s.add("last rejection", core_->lastRejection());
+  s.add("command timeouts", n.command_timeouts);
+  s.add("heartbeat losses", n.heartbeat_losses);
+  s.add("controller faults seen", n.controller_faults);
+  s.add("encoder frames lost", n.encoder_lost);
+  s.add("encoder frames duplicated/reordered", n.encoder_duplicated + n.encoder_reordered);
+  s.add("foreign commands on the bus", n.foreign_commands);
+}
+
+}  // namespace wheelchair_base_driver
+
+PLUGINLIB_EXPORT_CLASS(wheelchair_base_driver::BaseDriverNodelet, nodelet::Nodelet)
