@@ -25,7 +25,7 @@ void KldLocalizer::resetRecovery() {
 }
 
 void KldLocalizer::initGlobal() {
-  const int n = params_.fixed_particles > 0 ? params_.fixed_particles : params_.max_particles;
+  const int n = params_.fixed_particles > 0 ? params_.fixed_particles : params_.global_particles;
   particles_.assign(n, Particle());
   for (auto& p : particles_) {
     p.d = map_->sampleFreePose(rng_);
@@ -36,8 +36,7 @@ void KldLocalizer::initGlobal() {
 }
 
 void KldLocalizer::initGaussian(const TPose2D& mean, const mrpt::math::CMatrixDouble33& cov) {
-  const int n =
-      params_.fixed_particles > 0 ? params_.fixed_particles : std::max(params_.min_particles, 1000);
+  const int n = params_.fixed_particles > 0 ? params_.fixed_particles : params_.init_particles;
   Eigen::Matrix3d c = cov.asEigen();
   Eigen::LLT<Eigen::Matrix3d> llt(c + 1e-12 * Eigen::Matrix3d::Identity());
   const Eigen::Matrix3d l = llt.matrixL();
@@ -72,6 +71,7 @@ UpdateResult KldLocalizer::update(const TPose2D& odom, const LaserScan& scan, bo
   last_odom_ = odom;
   pending_first_update_ = false;
   normalizeAndEstimate();
+  inliers_ = measurement_.inlierFraction(estimate_.mean, params_.inlier_tolerance);
   return UpdateResult::kUpdated;
 }
 
@@ -120,6 +120,7 @@ void KldLocalizer::sampleStep(const TPose2D& odom_from, const TPose2D& odom_to) 
   }
   particles_.swap(next);
   for (auto& p : particles_) p.log_w -= log_max;  // rescale before normalizing
+  temperWeights();
   // Short/long-term averages of the per-beam likelihood (geometric mean over beams).
   if (drawn > 0 && params_.alpha_slow > 0) {
     const double w_avg = w_sum / drawn;
@@ -130,6 +131,30 @@ void KldLocalizer::sampleStep(const TPose2D& odom_from, const TPose2D& odom_to) 
       w_fast_ += params_.alpha_fast * (w_avg - w_fast_);
     }
   }
+}
+
+namespace {
+/// Effective sample size of weights exp(beta * log_w).
+double effectiveSampleSize(const std::vector<Particle>& particles, double beta) {
+  double sum = 0, sum_sq = 0;
+  for (const auto& p : particles) {
+    const double w = std::exp(beta * p.log_w);
+    sum += w;
+    sum_sq += w * w;
+  }
+  return sum * sum / sum_sq;
+}
+}  // namespace
+
+void KldLocalizer::temperWeights() {
+  const double target = params_.min_effective_fraction * particles_.size();
+  if (effectiveSampleSize(particles_, 1.0) >= target) return;
+  double lo = 0.0, hi = 1.0;  // ESS decreases with beta: bisect for ESS(beta) = target
+  for (int i = 0; i < 30; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (effectiveSampleSize(particles_, mid) >= target ? lo : hi) = mid;
+  }
+  for (auto& p : particles_) p.log_w *= lo;
 }
 
 void KldLocalizer::normalizeAndEstimate() {
@@ -158,6 +183,9 @@ LocalizationStatus KldLocalizer::status() const {
     why << "position uncertainty too large (sigma " << sxy << " m)";
   } else if (sth > params_.localized_max_theta_std) {
     why << "heading uncertainty too large (sigma " << sth * 180 / M_PI << " deg)";
+  } else if (inliers_ < params_.localized_min_inliers) {
+    why << "scan does not fit the map at the estimate (" << static_cast<int>(100 * inliers_)
+        << " % of the echoes within " << params_.inlier_tolerance << " m of an obstacle)";
   } else if (w_slow_ > 0 && w_fast_ < params_.recovery_ratio * w_slow_) {
     why << "scans no longer match the map (short/long-term likelihood " << w_fast_ / w_slow_ << ")";
   }

@@ -39,22 +39,6 @@ void distanceTransform1D(const std::vector<double>& f, std::vector<double>& d, s
 }
 }  // namespace
 
-mrpt::maps::COccupancyGridMap2D toMrptGrid(const GridData& g) {
-  if (g.width <= 0 || g.height <= 0 || !(g.resolution > 0) ||
-      g.data.size() != static_cast<size_t>(g.width) * g.height)
-    throw std::invalid_argument("grid is empty or its data size does not match width x height");
-  mrpt::maps::COccupancyGridMap2D grid;
-  grid.setSize(g.origin_x, g.origin_x + g.width * g.resolution, g.origin_y,
-               g.origin_y + g.height * g.resolution, g.resolution, 0.5f);
-  const int sx = grid.getSizeX(), sy = grid.getSizeY();
-  for (int iy = 0; iy < std::min(sy, g.height); ++iy)
-    for (int ix = 0; ix < std::min(sx, g.width); ++ix) {
-      const int8_t v = g.data[static_cast<size_t>(iy) * g.width + ix];
-      grid.setCell(ix, iy, v < 0 ? 0.5f : 1.0f - std::min<int>(v, 100) / 100.0f);
-    }
-  return grid;
-}
-
 LocalizationMap::LocalizationMap(const mrpt::maps::COccupancyGridMap2D& grid, double max_distance)
     : grid_(grid),
       size_x_(grid.getSizeX()),

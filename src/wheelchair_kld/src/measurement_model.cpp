@@ -61,6 +61,19 @@ double MeasurementModel::logLikelihoodField(const mrpt::math::TPose2D& pose) con
   return sum;
 }
 
+double MeasurementModel::inlierFraction(const mrpt::math::TPose2D& pose, double tolerance) const {
+  const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+  int echoes = 0, inliers = 0;
+  for (const Beam& b : beams_) {
+    if (b.max_range) continue;
+    ++echoes;
+    const int cell =
+        map_.cellIndex(pose.x + c * b.end_x - s * b.end_y, pose.y + s * b.end_x + c * b.end_y);
+    inliers += cell >= 0 && map_.obstacleDistance()[cell] <= tolerance;
+  }
+  return echoes > 0 ? static_cast<double>(inliers) / echoes : 0.0;
+}
+
 double MeasurementModel::logBeamModel(const mrpt::math::TPose2D& pose) const {
   const double c = std::cos(pose.phi), s = std::sin(pose.phi);
   const double ox = pose.x + c * sensor_pose_.x - s * sensor_pose_.y;

@@ -2,8 +2,9 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/random/RandomGenerators.h>
-#include <wheelchair_kld/localization_map.h>
 #include <wheelchair_kld/synthetic_drive.h>
+#include <wheelchair_mapping/map_io.h>
+#include <wheelchair_mapping/mrpt_conversions.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -12,85 +13,21 @@ namespace wheelchair_kld {
 
 using mrpt::math::TPose2D;
 
-namespace {
-struct Canvas {
-  GridData g;
-  Canvas(double w, double h) {
-    g.resolution = 0.05;
-    g.width = static_cast<int>(std::lround(w / g.resolution));
-    g.height = static_cast<int>(std::lround(h / g.resolution));
-    g.data.assign(static_cast<size_t>(g.width) * g.height, 0);
-    box(0, 0, w, 0.1);
-    box(0, h - 0.1, w, h);
-    box(0, 0, 0.1, h);
-    box(w - 0.1, 0, w, h);
-  }
-  /// Fills the axis-aligned rectangle [x0, x1] x [y0, y1] with obstacle.
-  void box(double x0, double y0, double x1, double y1) {
-    for (int iy = static_cast<int>(std::lround(y0 / g.resolution));
-         iy < std::lround(y1 / g.resolution); ++iy)
-      for (int ix = static_cast<int>(std::lround(x0 / g.resolution));
-           ix < std::lround(x1 / g.resolution); ++ix)
-        if (ix >= 0 && iy >= 0 && ix < g.width && iy < g.height)
-          g.data[static_cast<size_t>(iy) * g.width + ix] = 100;
-  }
-};
-}  // namespace
-
-mrpt::maps::COccupancyGridMap2D makeBuiltinWorld(const std::string& name) {
-  if (name == "flat") {  // a small apartment: hall, living room, bedroom, kitchen
-    Canvas c(10, 7);
-    c.box(4, 0, 4.1, 2.5);
-    c.box(4, 3.5, 4.1, 7);
-    c.box(0, 4, 2.5, 4.1);
-    c.box(7, 3, 10, 3.1);
-    c.box(6, 5, 6.6, 6.2);  // table
-    c.box(1, 1, 2.2, 1.6);  // bed
-    c.box(8.5, 0.1, 9.9, 0.7);
-    return toMrptGrid(c.g);
-  }
-  if (name == "office") {  // corridor with offices of different furniture
-    Canvas c(20, 12);
-    c.box(0, 4, 6, 4.1);
-    c.box(7, 4, 13, 4.1);
-    c.box(14, 4, 20, 4.1);
-    c.box(0, 7, 3, 7.1);
-    c.box(4, 7, 11, 7.1);
-    c.box(12, 7, 20, 7.1);
-    c.box(8, 7, 8.1, 12);
-    c.box(15, 7, 15.1, 12);
-    c.box(10, 0, 10.1, 4);
-    c.box(1, 1, 3, 2);
-    c.box(12, 1.5, 12.5, 2.5);
-    c.box(16, 0.5, 19, 1.2);
-    c.box(2, 9.5, 2.8, 11.9);
-    c.box(10, 9, 12, 10);
-    c.box(17, 10, 18, 11);
-    c.box(5.5, 5.3, 5.8, 5.6);
-    return toMrptGrid(c.g);
-  }
-  if (name == "symmetric") {  // invariant under a 180 deg rotation about its centre
-    Canvas c(10, 6);
-    c.box(2, 1.5, 2.5, 2);
-    c.box(7.5, 4, 8, 4.5);
-    c.box(2, 4, 2.5, 4.5);
-    c.box(7.5, 1.5, 8, 2);
-    c.box(4.5, 2.9, 5.5, 3.1);
-    return toMrptGrid(c.g);
-  }
-  throw std::invalid_argument("unknown built-in world '" + name + "'");
+mrpt::maps::COccupancyGridMap2D loadWorldGrid(const std::string& yaml_path) {
+  return wheelchair_mapping::toMrptGrid(wheelchair_mapping::loadMap(yaml_path));
 }
 
-std::vector<TPose2D> builtinRoute(const std::string& name) {
-  if (name == "flat")
-    return {{1, 3, 0},     {3.5, 3, 0},   {5.5, 3, 0}, {5.5, 1.5, 0}, {8, 1.5, 0}, {6.5, 2, 0},
-            {6.5, 4.5, 0}, {8.5, 4.5, 0}, {4.5, 3, 0}, {3, 3, 0},     {3, 5.5, 0}};
-  if (name == "office")
-    return {{1, 5.5, 0},    {6.5, 5.5, 0},  {6.5, 2.5, 0},  {9, 2.5, 0},    {6.6, 3, 0},
-            {6.6, 5.5, 0},  {11.5, 5.5, 0}, {11.5, 8.3, 0}, {13.5, 8.5, 0}, {13.5, 11, 0},
-            {11.5, 8.3, 0}, {11.5, 5.5, 0}, {18, 5.5, 0}};
-  if (name == "symmetric") return {{1, 1, 0}, {4, 1, 0}, {5, 2, 0}, {9, 1, 0}};
-  throw std::invalid_argument("unknown built-in route '" + name + "'");
+std::vector<TPose2D> worldRoute(const std::string& name) {
+  if (name == "flat")  // living room -> hallway -> study -> bedroom -> guest room
+    return {{3.0, 2.2, 0},  {5.1, 2.2, 0},  {5.1, 4.9, 0},  {5.1, 7.4, 0},
+            {7.4, 7.4, 0},  {5.1, 7.4, 0},  {5.1, 9.35, 0}, {3.7, 9.3, 0},
+            {5.1, 9.35, 0}, {5.1, 10.2, 0}, {7.5, 10.2, 0}};
+  if (name == "office")  // lobby -> corridor -> office n1 -> corridor -> office s4
+    return {{2.0, 11.0, 0},  {10.5, 12.0, 0},  {13.2, 12.0, 0}, {13.2, 16.0, 0},
+            {13.2, 12.0, 0}, {29.35, 12.0, 0}, {29.35, 7.0, 0}};
+  if (name == "symmetric")  // room a -> corridor -> room b
+    return {{5.0, 5.5, 0}, {8.0, 5.0, 0}, {16.0, 5.0, 0}, {19.0, 4.5, 0}};
+  throw std::invalid_argument("no route for world '" + name + "'");
 }
 
 LaserScan simulateScan(const mrpt::maps::COccupancyGridMap2D& grid, const TPose2D& truth,

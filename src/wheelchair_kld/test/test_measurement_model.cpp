@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <wheelchair_kld/measurement_model.h>
 #include <wheelchair_kld/synthetic_drive.h>
+#include <wheelchair_mapping/mrpt_conversions.h>
 
 #include <cmath>
 
@@ -9,14 +10,14 @@ using mrpt::math::TPose2D;
 using namespace wheelchair_kld;
 
 TEST(LocalizationMap, DistanceTransformMatchesBruteForce) {
-  GridData g;
+  wheelchair_mapping::OccupancyMap g;
   g.resolution = 0.1;
   g.width = 37;
   g.height = 23;
-  g.data.assign(g.width * g.height, 0);
+  g.data.assign(g.width * g.height, wheelchair_mapping::kFree);
   const int occ[][2] = {{3, 4}, {30, 20}, {12, 12}, {13, 12}, {0, 22}};
-  for (auto& c : occ) g.data[c[1] * g.width + c[0]] = 100;
-  const LocalizationMap map(toMrptGrid(g), 10.0);
+  for (auto& c : occ) g.at(c[0], c[1]) = wheelchair_mapping::kOccupied;
+  const LocalizationMap map(wheelchair_mapping::toMrptGrid(g), 10.0);
   for (int iy = 0; iy < g.height; ++iy)
     for (int ix = 0; ix < g.width; ++ix) {
       double best = 1e9;
@@ -25,28 +26,29 @@ TEST(LocalizationMap, DistanceTransformMatchesBruteForce) {
     }
 }
 
-TEST(LocalizationMap, RejectsInconsistentGrid) {
-  GridData g;
-  g.width = 10;
-  g.height = 10;
-  g.data.assign(5, 0);
-  EXPECT_THROW(toMrptGrid(g), std::invalid_argument);
+TEST(LocalizationMap, SamplesPosesOnlyInKnownFreeSpace) {
+  const LocalizationMap map(loadWorldGrid(WORLDS_DIR "/office.yaml"), 2.0);
+  mrpt::random::CRandomGenerator rng(2);
+  for (int i = 0; i < 2000; ++i) {
+    const TPose2D p = map.sampleFreePose(rng);
+    ASSERT_TRUE(map.isFree(map.cellIndex(p.x, p.y))) << p.asString();
+  }
 }
 
 class MeasurementModelTest : public ::testing::TestWithParam<MeasurementModelType> {};
 
 TEST_P(MeasurementModelTest, TruePoseIsMoreLikelyThanOffsetPoses) {
-  const auto grid = makeBuiltinWorld("office");
+  const auto grid = loadWorldGrid(WORLDS_DIR "/office.yaml");
   const LocalizationMap map(grid, 2.0);
   MeasurementParams p;
   p.type = GetParam();
   MeasurementModel model(map, p);
-  const TPose2D truth(4.0, 5.5, 0.2);
+  const TPose2D truth(5.0, 11.0, 0.2);
   model.setScan(simulateScan(grid, truth, DriveParams(), 11));
   EXPECT_EQ(model.beamCount(), 61);
   const double at_truth = model.logLikelihood(truth);
-  for (const TPose2D off : {TPose2D(4.15, 5.5, 0.2), TPose2D(4.0, 5.35, 0.2),
-                            TPose2D(4.0, 5.5, 0.25), TPose2D(8.0, 5.5, 0.2)})
+  for (const TPose2D off : {TPose2D(5.15, 11.0, 0.2), TPose2D(5.0, 10.85, 0.2),
+                            TPose2D(5.0, 11.0, 0.25), TPose2D(9.0, 11.0, 0.2)})
     EXPECT_GT(at_truth, model.logLikelihood(off)) << off.asString();
 }
 

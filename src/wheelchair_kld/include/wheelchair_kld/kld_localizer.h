@@ -46,6 +46,8 @@ class KldLocalizer {
   void setExpectedBeams(int n) { expected_beams_ = n; }
   double wSlow() const { return w_slow_; }
   double wFast() const { return w_fast_; }
+  /// Share of the last scan's echoes that fit the map at the estimate.
+  double inlierFraction() const { return inliers_; }
   const KldParams& params() const { return params_; }
   const LocalizationMap& map() const { return *map_; }
 
@@ -53,6 +55,8 @@ class KldLocalizer {
   /// The sampling loop of Algorithm 1: draws, predicts, weighs until M >= max(M_x, M_min)
   /// (bounded by M_max), or exactly fixed_particles in fixed-size mode.
   void sampleStep(const mrpt::math::TPose2D& odom_from, const mrpt::math::TPose2D& odom_to);
+  /// Raises the weights to the power that keeps min_effective_fraction of them effective.
+  void temperWeights();
   /// Normalizes weights (Algorithm 1, lines 20-23) and updates the cluster estimate.
   void normalizeAndEstimate();
   void resetRecovery();
@@ -67,6 +71,7 @@ class KldLocalizer {
   bool pending_first_update_ = false;
   int expected_beams_ = 0;
   double w_slow_ = 0, w_fast_ = 0;
+  double inliers_ = 0;  ///< inlier fraction of the last scan at the estimate
   std::string last_rejection_;
 };
 

@@ -21,7 +21,7 @@ enum class MeasurementModelType { kLikelihoodField, kBeam };
 struct MeasurementParams {
   MeasurementModelType type = MeasurementModelType::kLikelihoodField;
   int beam_step = 6;       ///< use every beam_step-th beam (361 -> 61)
-  double sigma_hit = 0.1;  ///< [m] std of the hit component
+  double sigma_hit = 0.2;  ///< [m] std of the hit component
   double z_hit = 0.9;      ///< mixture weights (likelihood field: hit + random)
   double z_rand = 0.1;
   double z_short = 0.05;      ///< beam model only
@@ -30,19 +30,29 @@ struct MeasurementParams {
   double max_range = 30.0;    ///< [m] beams at or beyond this carry no information
   double max_distance = 2.0;  ///< [m] likelihood-field distance cap
   /// Exponent applied to the log-likelihood (beams are not independent; < 1 tempers).
-  double likelihood_exponent = 1.0;
+  double likelihood_exponent = 0.1;
 };
 
 struct KldParams {
   // KLD-sampling (Fox 2003).
-  double epsilon = 0.05;      ///< K-L error bound
-  double delta = 0.01;        ///< 1 - confidence
-  double bin_xy = 0.25;       ///< [m] histogram bin size
-  double bin_theta = 0.1745;  ///< [rad] (10 deg)
-  int min_particles = 200;    ///< M_min
-  int max_particles = 30000;  ///< M_max
+  double epsilon = 0.05;       ///< K-L error bound
+  double delta = 0.01;         ///< 1 - confidence
+  double bin_xy = 0.25;        ///< [m] histogram bin size
+  double bin_theta = 0.1745;   ///< [rad] (10 deg)
+  int min_particles = 200;     ///< M_min
+  int max_particles = 100000;  ///< M_max
+  /// Particles spread over the free space by global localization (may exceed M_max: the first
+  /// KLD step brings the count back under M_max).
+  int global_particles = 200000;
+  /// Particles drawn around an initial pose estimate.
+  int init_particles = 10000;
   /// When > 0 the filter is plain fixed-size MCL with this many particles (for comparison).
   int fixed_particles = 0;
+
+  /// Likelihood tempering: when the weights of a step would leave fewer than this share of the
+  /// particles effective, they are raised to the power beta < 1 that restores it (keeps the
+  /// competing hypotheses of a global localization or a symmetric world alive).
+  double min_effective_fraction = 0.01;
 
   // Update gating: filter only after this much travel since the last update.
   double update_min_d = 0.05;  ///< [m]
@@ -60,6 +70,9 @@ struct KldParams {
   double localized_max_xy_std = 0.25;       ///< [m]
   double localized_max_theta_std = 0.1745;  ///< [rad]
   double localized_min_cluster_weight = 0.9;
+  /// Share of the echoes that must end within inlier_tolerance of an obstacle at the estimate.
+  double localized_min_inliers = 0.7;
+  double inlier_tolerance = 0.15;  ///< [m]
 
   MotionNoise motion;
   MeasurementParams measurement;

@@ -12,18 +12,6 @@
 
 namespace wheelchair_kld {
 
-/// nav_msgs/OccupancyGrid-style input: row-major, row 0 at origin_y, -1 unknown, 0..100.
-struct GridData {
-  double resolution = 0.05;
-  double origin_x = 0, origin_y = 0;
-  int width = 0, height = 0;
-  std::vector<int8_t> data;
-};
-
-/// Builds an MRPT grid (cell value = probability of being free) from nav_msgs-style cells.
-/// Throws std::invalid_argument on an empty or inconsistent grid.
-mrpt::maps::COccupancyGridMap2D toMrptGrid(const GridData& grid);
-
 class LocalizationMap {
  public:
   /// `max_distance` caps the obstacle distance transform [m].

@@ -23,6 +23,10 @@ class MeasurementModel {
   /// Tempered log p(z | pose, map) of the current scan for a robot (base_link) pose.
   double logLikelihood(const mrpt::math::TPose2D& pose) const;
 
+  /// Share of the echoes whose endpoint lies within `tolerance` of an obstacle for this pose
+  /// (how well the scan fits the map there).
+  double inlierFraction(const mrpt::math::TPose2D& pose, double tolerance) const;
+
  private:
   struct Beam {
     double end_x, end_y;  ///< endpoint in base_link (likelihood field)

@@ -12,12 +12,12 @@
 
 namespace wheelchair_kld {
 
-/// A built-in world ("flat", "office", "symmetric") drawn in code, used when the project's
-/// map files are not available; throws std::invalid_argument for other names.
-mrpt::maps::COccupancyGridMap2D makeBuiltinWorld(const std::string& name);
+/// The MRPT grid of a map_server YAML map (e.g. the project's test/worlds/office.yaml).
+mrpt::maps::COccupancyGridMap2D loadWorldGrid(const std::string& yaml_path);
 
-/// A route through the free space of a built-in world (waypoints; heading follows the path).
-std::vector<mrpt::math::TPose2D> builtinRoute(const std::string& name);
+/// A route through the doors of a project test world ("flat", "office", "symmetric"), as
+/// waypoints (the heading follows the path); throws std::invalid_argument for other names.
+std::vector<mrpt::math::TPose2D> worldRoute(const std::string& name);
 
 struct DriveParams {
   double step = 0.1;               ///< [m] travel between scans (rotation steps: 0.1 rad)
