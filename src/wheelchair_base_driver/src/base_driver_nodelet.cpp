@@ -163,6 +163,10 @@ void BaseDriverNodelet::onTimer(const ros::TimerEvent&) {
     }
     last_logged_state_ = state;
     publishStatus();
+    last_status_time_ = now;
+  } else if (now - last_status_time_ >= 0.5 || now < last_status_time_) {
+    publishStatus();  // 2 Hz refresh: counters change without a change of state
+    last_status_time_ = now;
   }
   const OdometryState& odo = core_->odometry();
   if (odo.stamp > last_odom_stamp_) {

@@ -1,1 +1,272 @@
-int main() { return 0; }
+// System tests of the driver node over the UDP transport: this node plays the chair — it owns
+// sim time (/clock), an EmulatedMotorController and a trivial wheel plant — and talks to the
+// driver through the protocol. One .test file per behaviour selects one test with --gtest_filter.
+#include <wheelchair_base_driver/emulated_motor_controller.h>
+#include <wheelchair_base_driver/udp_transport.h>
+
+#include <diagnostic_msgs/DiagnosticStatus.h>
+#include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/JointState.h>
+#include <std_msgs/Bool.h>
+#include <std_srvs/Trigger.h>
+#include <wheelchair_msgs/WheelTorques.h>
+
+#include <atomic>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+namespace wheelchair_base_driver {
+namespace {
+
+constexpr double kStep = 0.001;  // sim seconds per loop step (one step per 2 ms wall time)
+
+class EmulatedChair {
+ public:
+  EmulatedChair() : plant_(0.5, 0.5) {
+    ros::NodeHandle nh;
+    clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
+    int port = 0;
+    for (int i = 0; i < 200 && !nh.getParam("/base_driver/udp_bound_port", port); ++i) {
+      ros::WallDuration(0.05).sleep();
+    }
+    if (port <= 0) throw std::runtime_error("the driver did not publish ~udp_bound_port");
+    transport_ = std::make_unique<UdpTransport>(0, static_cast<std::uint16_t>(port),
+                                                [this] { return now_.load(); });
+    EmulatedControllerConfig config;
+    config.max_torque = 50.0;
+    controller_ = std::make_unique<EmulatedMotorController>(config, *transport_, plant_);
+    thread_ = std::thread([this] { loop(); });
+  }
+  ~EmulatedChair() {
+    running_ = false;
+    thread_.join();
+  }
+  double now() const { return now_.load(); }
+  template <typename F>
+  auto with(F f) {  // runs f(controller, plant) under the loop's lock
+    std::lock_guard<std::mutex> lock(mutex_);
+    return f(*controller_, plant_);
+  }
+  /// Waits (in sim time, at most `timeout`) until `condition` holds; returns the sim time or -1.
+  double waitUntil(const std::function<bool()>& condition, double timeout) {
+    const double end = now() + timeout;
+    while (now() < end && ros::ok()) {
+      if (condition()) return now();
+      ros::WallDuration(0.0002).sleep();
+    }
+    return condition() ? now() : -1.0;
+  }
+
+ private:
+  void loop() {
+    while (running_ && ros::ok()) {
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        now_ = now_ + kStep;
+        rosgraph_msgs::Clock clock;
+        clock.clock = ros::Time(now_.load());
+        clock_pub_.publish(clock);
+        controller_->step(now_);
+        plant_.advance(kStep);
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }
+  std::atomic<double> now_{1.0};
+  std::atomic<bool> running_{true};
+  std::mutex mutex_;
+  ros::Publisher clock_pub_;
+  SimpleWheelPlant plant_;
+  std::unique_ptr<UdpTransport> transport_;
+  std::unique_ptr<EmulatedMotorController> controller_;
+  std::thread thread_;
+};
+
+struct DriverNodeTest : ::testing::Test {
+  void SetUp() override {
+    torque_pub = nh.advertise<wheelchair_msgs::WheelTorques>("/wheel_torques", 10);
+    estop_pub = nh.advertise<std_msgs::Bool>("/estop", 10, true);
+    status_sub = nh.subscribe<diagnostic_msgs::DiagnosticStatus>(
+        "/base_driver/status", 10, [this](const diagnostic_msgs::DiagnosticStatus::ConstPtr& m) {
+          std::lock_guard<std::mutex> lock(mutex);
+          status = *m;
+        });
+    odom_sub = nh.subscribe<nav_msgs::Odometry>("/odom", 10,
+                                                [this](const nav_msgs::Odometry::ConstPtr& m) {
+                                                  std::lock_guard<std::mutex> lock(mutex);
+                                                  odom = *m;
+                                                });
+    joints_sub = nh.subscribe<sensor_msgs::JointState>(
+        "/joint_states", 10, [this](const sensor_msgs::JointState::ConstPtr& m) {
+          std::lock_guard<std::mutex> lock(mutex);
+          joints = *m;
+        });
+    chair = std::make_unique<EmulatedChair>();
+    // The driver sees the controller and acknowledges its start-up fault.
+    ASSERT_GT(chair->waitUntil([this] { return statusMessage() == "waiting_for_command"; }, 5.0), 0)
+        << "driver status: " << statusMessage();
+  }
+  std::string statusMessage() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return status.message;
+  }
+  std::string statusValue(const std::string& key) {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const auto& kv : status.values) {
+      if (kv.key == key) return kv.value;
+    }
+    return "";
+  }
+  void publish(double left, double right) {
+    wheelchair_msgs::WheelTorques msg;
+    msg.header.stamp = ros::Time(chair->now());
+    msg.left = left;
+    msg.right = right;
+    torque_pub.publish(msg);
+    last_publish = chair->now();
+  }
+  /// Publishes (left, right) at 50 Hz for `duration` sim seconds.
+  void drive(double duration, double left, double right) {
+    const double end = chair->now() + duration;
+    double next = chair->now();
+    while (chair->now() < end && ros::ok()) {
+      if (chair->now() >= next) {
+        publish(left, right);
+        next += 0.02;
+      }
+      ros::WallDuration(0.0005).sleep();
+    }
+  }
+  bool braked() {
+    return chair->with([](EmulatedMotorController&, SimpleWheelPlant& p) { return p.braked(); });
+  }
+
+  ros::NodeHandle nh;
+  ros::Publisher torque_pub, estop_pub;
+  ros::Subscriber status_sub, odom_sub, joints_sub;
+  std::mutex mutex;
+  diagnostic_msgs::DiagnosticStatus status;
+  nav_msgs::Odometry odom;
+  sensor_msgs::JointState joints;
+  std::unique_ptr<EmulatedChair> chair;
+  double last_publish = 0;
+};
+
+TEST_F(DriverNodeTest, TorquesReachTheMotorsWithScaleAndSign) {
+  drive(1.0, 12.5, -7.25);
+  chair->with([](EmulatedMotorController&, SimpleWheelPlant& p) {
+    EXPECT_FALSE(p.braked());
+    EXPECT_NEAR(p.leftTorque(), 12.5, 0.005);
+    EXPECT_NEAR(p.rightTorque(), -7.25, 0.005);
+    EXPECT_GT(p.leftRate(), 0.0);
+    EXPECT_LT(p.rightRate(), 0.0);
+  });
+  const WheelAngles wheels =
+      chair->with([](EmulatedMotorController&, SimpleWheelPlant& p) { return p.wheelAngles(); });
+  std::lock_guard<std::mutex> lock(mutex);
+  EXPECT_EQ(status.message, "driving");
+  ASSERT_EQ(joints.position.size(), 2u);
+  // Odometry from the encoder frames follows the simulated wheels (0.1 rad: a few frames of lag).
+  EXPECT_NEAR(joints.position[0], wheels.left, 0.1);
+  EXPECT_NEAR(joints.position[1], wheels.right, 0.1);
+  EXPECT_LT(odom.twist.twist.angular.z, 0.0);  // left forward, right back: turning clockwise
+  EXPECT_EQ(odom.header.frame_id, "odom");
+  EXPECT_EQ(odom.child_frame_id, "base_link");
+}
+
+TEST_F(DriverNodeTest, CommandSilenceBrakesWithin100ms) {
+  drive(0.5, 10.0, 10.0);
+  ASSERT_FALSE(braked());
+  const double silent_since = last_publish;
+  const double braked_at = chair->waitUntil([this] { return braked(); }, 1.0);
+  ASSERT_GT(braked_at, 0);
+  // Watchdog 100 ms after the last message; allowance for the driver's 500 Hz timer, the
+  // controller's 1 ms step and message transport in sim time.
+  EXPECT_GE(braked_at - silent_since, 0.1 - 1e-6);
+  EXPECT_LE(braked_at - silent_since, 0.1 + 0.02);
+  chair->waitUntil([this] { return statusMessage() == "command_timeout"; }, 0.5);
+  EXPECT_EQ(statusMessage(), "command_timeout");
+}
+
+TEST_F(DriverNodeTest, HeartbeatLossFaults) {
+  drive(0.3, 5.0, 5.0);
+  chair->with([](EmulatedMotorController& c, SimpleWheelPlant&) { c.setSilent(true); });
+  const double silent_since = chair->now();
+  double fault_at = -1;
+  const double end = chair->now() + 1.0;
+  double next = chair->now();
+  while (chair->now() < end && fault_at < 0) {  // the controller keeps commanding
+    if (chair->now() >= next) {
+      publish(5.0, 5.0);
+      next += 0.02;
+    }
+    if (statusMessage() == "motor_controller_heartbeat_lost") fault_at = chair->now();
+    ros::WallDuration(0.0005).sleep();
+  }
+  ASSERT_GT(fault_at, 0) << statusMessage();
+  // 200 ms after the last heartbeat, which was at most 50 ms before the silence.
+  EXPECT_LE(fault_at - silent_since, 0.2 + 0.02);
+  EXPECT_GE(fault_at - silent_since, 0.2 - 0.05 - 1e-6);
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    EXPECT_EQ(status.level, diagnostic_msgs::DiagnosticStatus::ERROR);
+  }
+  EXPECT_GT(chair->waitUntil([this] { return braked(); }, 0.05), 0);
+}
+
+TEST_F(DriverNodeTest, EstopLatchesUntilCleared) {
+  drive(0.3, 8.0, 8.0);
+  ASSERT_FALSE(braked());
+  std_msgs::Bool on;
+  on.data = true;
+  estop_pub.publish(on);
+  EXPECT_GT(chair->waitUntil([this] { return braked(); }, 0.05), 0);
+  drive(0.3, 8.0, 8.0);
+  EXPECT_TRUE(braked());
+  std_msgs::Bool off;
+  off.data = false;
+  estop_pub.publish(off);  // the topic cannot release it
+  drive(0.3, 8.0, 8.0);
+  EXPECT_TRUE(braked());
+  EXPECT_EQ(statusMessage(), "estop");
+  std_srvs::Trigger clear;
+  ASSERT_TRUE(ros::service::call("/base_driver/clear_estop", clear));
+  EXPECT_TRUE(clear.response.success);
+  drive(0.2, 8.0, 8.0);
+  EXPECT_FALSE(braked());
+  std_srvs::Trigger stop;
+  ASSERT_TRUE(ros::service::call("/base_driver/estop", stop));
+  drive(0.1, 8.0, 8.0);
+  EXPECT_TRUE(braked());
+}
+
+TEST_F(DriverNodeTest, NanTorquesAreRejected) {
+  drive(0.3, 8.0, 8.0);
+  ASSERT_FALSE(braked());
+  publish(std::nan(""), 8.0);
+  const double sent = last_publish;
+  const double braked_at = chair->waitUntil([this] { return braked(); }, 0.2);
+  ASSERT_GT(braked_at, 0);
+  EXPECT_LT(braked_at - sent, 0.05);  // at once, not after the 100 ms watchdog
+  chair->waitUntil([this] { return statusValue("rejected non-finite") == "1"; }, 0.5);
+  EXPECT_EQ(statusValue("rejected non-finite"), "1");
+  drive(0.2, 8.0, 8.0);  // valid commands drive again
+  EXPECT_FALSE(braked());
+}
+
+}  // namespace
+}  // namespace wheelchair_base_driver
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "base_driver_rostest");
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  return RUN_ALL_TESTS();
+}

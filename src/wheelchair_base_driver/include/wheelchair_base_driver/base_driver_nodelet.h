@@ -54,6 +54,7 @@ class BaseDriverNodelet : public nodelet::Nodelet {
   std::string odom_frame_, base_frame_, left_joint_, right_joint_;
   bool publish_tf_ = true;
   double last_odom_stamp_ = -1.0;
+  double last_status_time_ = -1.0;
   DriverState last_logged_state_ = DriverState::kNoController;
 };
 
