@@ -12,8 +12,9 @@ double approachJerk(double v, double a, double v_target, const MotionLimits& lim
   if (std::abs(e) <= j * dt * dt && std::abs(a) <= j * dt) return -a / dt;
   const double dir = e > 0.0 ? 1.0 : -1.0;
   const double a_dir = dir * a, e_abs = std::abs(e);
-  // Speed still gained while ramping the acceleration back to zero: a^2 / (2 j).
-  if (a_dir > 0.0 && a_dir * a_dir / (2.0 * j) >= e_abs) return -dir * j;
+  // Speed still gained while ramping the acceleration back to zero: a^2 / (2 j), plus one
+  // step of a (the ramp starts on a step boundary).
+  if (a_dir > 0.0 && a_dir * a_dir / (2.0 * j) + a_dir * dt >= e_abs) return -dir * j;
   if (a_dir < limits.accel) return dir * std::min(j, (limits.accel - a_dir) / dt);
   return 0.0;
 }
@@ -42,6 +43,8 @@ JerkLimitedProfile::JerkLimitedProfile(double length, std::vector<double> speed_
                                   limits.accel / limits.jerk + x.v / limits.accel) +
                           10.0;
   while (x.t < max_time) {
+    const bool at_rest = x.v < 0.1 * kEndTolerance && std::abs(x.a) < kEndTolerance;
+    if (samples_.size() > 1 && at_rest) break;
     if (length_ - x.s < kEndTolerance && x.v < kEndTolerance) break;
     // Greedy: the fastest jerk toward the cruise speed that still leaves a safe braking.
     const double j_want = approachJerk(x.v, x.a, limits.speed, limits, dt_);
@@ -57,10 +60,9 @@ JerkLimitedProfile::JerkLimitedProfile(double length, std::vector<double> speed_
     }
     x = integrateJerk(x, j, dt_, limits.accel);
     x.v = std::max(0.0, x.v);
-    x.s = std::min(x.s, length_);
     samples_.push_back(x);
   }
-  samples_.back().s = length_;
+  samples_.back().s = std::min(samples_.back().s, length_);
   samples_.back().v = 0.0;
   samples_.back().a = 0.0;
 }
@@ -73,7 +75,8 @@ double JerkLimitedProfile::limitAt(double s) const {
 }
 
 bool JerkLimitedProfile::canBrake(const ProfileSample& start) const {
-  constexpr double kStep = 0.02, kSlack = 1e-3;
+  constexpr double kSlack = 1e-3;
+  const double kStep = dt_;  // the same discretization as the profile itself
   ProfileSample x = start;
   for (int i = 0; i < 100000 && (x.v > 0.0 || x.a > 0.0); ++i) {
     if (x.s > length_ + kSlack) return false;

@@ -84,7 +84,7 @@ PathOutputTrajectory::PathOutputTrajectory(std::shared_ptr<const SmoothPath> pat
   nominal.longitudinal.jerk *= margin;
   nominal.lateral_accel *= margin;
   nominal.lateral_jerk *= margin;
-  const double check = 0.5 * (1.0 + margin);
+  const double check = margin + 0.1;  // the nominal longitudinal limits stay below it
   std::vector<double> speed_limit = curvatureSpeedLimit(*path_, nominal);
   constexpr int kIterations = 12;
   constexpr double kSlowdown = 0.85, kSpread = 0.5;  // factor, [m] around a violation

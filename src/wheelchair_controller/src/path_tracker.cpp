@@ -15,7 +15,7 @@ namespace {
 constexpr double kMinPathLength = 0.01;  // [m] shorter paths are "zero-length"
 constexpr double kNominalStep = 0.02;    // [s] assumed control period of the first step
 constexpr double kAtRestSpeed = 0.05;    // [m/s] below: may rotate in place before the path
-constexpr double kSettledSpeed = 0.05;   // [m/s] rim speed below which the goal may be declared
+constexpr double kSettledSpeed = 0.01;   // [m/s] rim speed below which the goal may be declared
 
 std::string format(const char* fmt, double value) {
   char buf[128];

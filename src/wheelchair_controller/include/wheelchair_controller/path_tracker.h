@@ -20,7 +20,7 @@ struct TrackerConfig {
   double damping = 1.0;             ///< zeta (1: critically damped, no overshoot)
   double max_feedback_accel = 0.5;  ///< |feedback part of v| limit [m/s^2]
   PathLimits path_limits;           ///< comfort limits (speed 0.8, accel 0.5, jerk 1.0)
-  double limit_margin = 0.8;        ///< the nominal reference uses this share of the comfort limits
+  double limit_margin = 0.7;        ///< the nominal reference uses this share of the comfort limits
   MotionLimits rotation_limits{0.6, 0.8, 1.6};  ///< in-place rotation [rad/s, rad/s^2, rad/s^3]
   double start_heading_tolerance = 0.5;         ///< [rad] larger: rotate in place before the path
   double goal_position_tolerance = 0.05;        ///< [m] P_l at the end of the reference
