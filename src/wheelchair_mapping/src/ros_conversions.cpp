@@ -47,4 +47,16 @@ OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg) {
   return map;
 }
 
+LaserScan2D fromLaserScanMsg(const sensor_msgs::LaserScan& msg) {
+  LaserScan2D scan;
+  scan.stamp = msg.header.stamp.toSec();
+  scan.angle_min = msg.angle_min;
+  scan.angle_max = msg.angle_max;
+  scan.angle_increment = msg.angle_increment;
+  scan.range_min = msg.range_min;
+  scan.range_max = msg.range_max;
+  scan.ranges = msg.ranges;
+  return scan;
+}
+
 }  // namespace wheelchair_mapping

@@ -4,6 +4,8 @@
 #include <nav_msgs/MapMetaData.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/time.h>
+#include <sensor_msgs/LaserScan.h>
+#include <wheelchair_mapping/laser_scan.h>
 #include <wheelchair_mapping/occupancy_map.h>
 
 #include <string>
@@ -18,5 +20,8 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const OccupancyMap& map, const std::stri
 /// Throws std::invalid_argument when the message's data size differs from width x height or
 /// the resolution is not positive.
 OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg);
+
+/// The scan's fields as they are (REP-117 conventions are applied by the mapper).
+LaserScan2D fromLaserScanMsg(const sensor_msgs::LaserScan& msg);
 
 }  // namespace wheelchair_mapping
