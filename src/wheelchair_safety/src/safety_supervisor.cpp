@@ -168,7 +168,8 @@ SafetyVerdict SafetySupervisor::evaluate(double now) const {
 SafetyVerdict SafetySupervisor::check(double now) {
   if (latched_.stop) return latched_;
   const SafetyVerdict verdict = evaluate(now);
-  if (verdict.stop) latched_ = verdict;
+  // Waiting for the first data is a state, not an event: nothing has moved yet.
+  if (verdict.stop && verdict.reason != StopReason::kNoData) latched_ = verdict;
   return verdict;
 }
 

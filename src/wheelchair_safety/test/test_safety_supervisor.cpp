@@ -50,9 +50,13 @@ TEST(SafetySupervisor, HealthyDataDoesNotStop) {
   EXPECT_FALSE(s.check(10.1).stop) << s.check(10.1).detail;
 }
 
-TEST(SafetySupervisor, NoDataYetStops) {
+TEST(SafetySupervisor, NoDataYetStopsUntilTheDataArrives) {
   SafetySupervisor s;
   EXPECT_EQ(s.check(0.0).reason, StopReason::kNoData);
+  s.onLocalization(0.1, true, Eigen::Matrix3d::Identity() * 1e-3, "");
+  s.onPose(0.1, Eigen::Vector3d(2.0, 2.0, 0.0));
+  s.onScan(0.1, {});
+  EXPECT_FALSE(s.check(0.2).stop) << s.check(0.2).detail;
 }
 
 TEST(SafetySupervisor, LaserSilentFor300msStops) {

@@ -66,7 +66,8 @@ class SafetySupervisor {
   /// holds, the next check() stops again.
   void onUserCommand(double stamp);
 
-  /// The verdict at time `now`; once a stop is returned it latches until onUserCommand().
+  /// The verdict at time `now`; once a stop is returned it latches until onUserCommand()
+  /// (except kNoData: waiting for the first sensor data clears by itself).
   SafetyVerdict check(double now);
 
   const SafetyVerdict& latched() const { return latched_; }
