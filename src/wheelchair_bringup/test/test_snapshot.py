@@ -3,7 +3,9 @@
 
 The map (12 m x 10 m, 5 cm cells) is free inside a 20 cm wall, with a 2 m x 2 m occupied
 block at its centre. Viewed top-down at SCALE px/m, rviz must draw the free area as a bright
-rectangle of the map's inner size times SCALE, with the dark block at its centre.
+rectangle of the map's inner size times SCALE, with the dark block at its centre. A robot (one
+cyan box, 20 cm high, centred at z = 0 like a chair's base_link) stands at ROBOT_XY: it must be
+drawn over the map at the right place, not hidden by it.
 """
 import os
 import pathlib
@@ -16,11 +18,20 @@ import unittest
 import numpy as np
 import rospy
 import rostest
+import tf2_ros
+from geometry_msgs.msg import TransformStamped
 from nav_msgs.msg import OccupancyGrid
 
 WIDTH, HEIGHT, RES, WALL, BLOCK = 12.0, 10.0, 0.05, 0.2, 2.0
 SCALE = 40.0  # px / m
 BACKGROUND = (48, 48, 48)  # rviz background colour of config/wheelchair.rviz
+ROBOT_XY, ROBOT_SIZE = (3.0, 7.0), 0.6  # [m] in the map frame
+# Like the chair's URDF: a root link base_footprint that no tf reaches (odom -> base_link is
+# the stack's convention), a box in base_link.
+ROBOT_URDF = f"""<robot name="box"><link name="base_footprint"/><link name="base_link"><visual>
+<geometry><box size="{ROBOT_SIZE} {ROBOT_SIZE} 0.2"/></geometry><material name="cyan">
+<color rgba="0 1 1 1"/></material></visual></link><joint name="j" type="fixed">
+<parent link="base_footprint"/><child link="base_link"/><origin xyz="0 0 0.17"/></joint></robot>"""
 
 
 def test_map():
@@ -39,6 +50,16 @@ def test_map():
     msg.info.origin.orientation.w = 1.0
     msg.data = grid.flatten().tolist()
     return msg
+
+
+def robot_pose():
+    """Static tf map -> base_link placing the robot at ROBOT_XY."""
+    t = TransformStamped()
+    t.header.stamp = rospy.Time.now()
+    t.header.frame_id, t.child_frame_id = "map", "base_link"
+    t.transform.translation.x, t.transform.translation.y = ROBOT_XY
+    t.transform.rotation.w = 1.0
+    return t
 
 
 def read_png(path):
@@ -73,6 +94,9 @@ class SnapshotShowsTheMap(unittest.TestCase):
         rospy.init_node("snapshot_test")
         cls.publisher = rospy.Publisher("/map", OccupancyGrid, queue_size=1, latch=True)
         cls.publisher.publish(test_map())
+        rospy.set_param("/robot_description", ROBOT_URDF)
+        cls.broadcaster = tf2_ros.StaticTransformBroadcaster()
+        cls.broadcaster.sendTransform(robot_pose())
         cls.tmp = tempfile.TemporaryDirectory()
         cls.png = pathlib.Path(cls.tmp.name) / "map.png"
         started = time.monotonic()
@@ -115,6 +139,17 @@ class SnapshotShowsTheMap(unittest.TestCase):
         self.assertLess(block.max(), 40, "the centre block is not drawn dark")
         wall = image[ys.min() - 3, cx]  # just outside the free space: the wall
         self.assertLess(wall.max(), 40)
+
+    def test_robot_is_drawn_over_the_map_where_it_stands(self):
+        image = render_area(read_png(self.png).astype(int))
+        ys, xs = np.nonzero(bright_neutral(image))
+        # The free space starts at (WALL, WALL): its lower-left corner is (xs.min(), ys.max()).
+        px = xs.min() + (ROBOT_XY[0] - WALL) * SCALE
+        py = ys.max() - (ROBOT_XY[1] - WALL) * SCALE
+        half = int(0.8 * ROBOT_SIZE * SCALE / 2)  # the box's core, clear of its edges
+        core = image[int(py) - half:int(py) + half, int(px) - half:int(px) + half]
+        cyan = (core[..., 0] < 80) & (core[..., 1] > 150) & (core[..., 2] > 150)
+        self.assertGreater(cyan.mean(), 0.8, "the robot is hidden by the map or drawn elsewhere")
 
 
 if __name__ == "__main__":
