@@ -41,10 +41,10 @@ void HarmonicPlanner::initialize(const std::string& name,
 }
 
 bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
-                               PlanCertificate& cert) {
+                               Certificate& cert) {
   const auto t0 = std::chrono::steady_clock::now();
   plan.clear();
-  cert = PlanCertificate();
+  cert = Certificate();
   cert.planner = "HarmonicPlanner";
   const auto finish = [&](bool ok) {
     cert.success = ok;

@@ -52,10 +52,10 @@ void OmplPlanner::initialize(const std::string& name, const wheelchair_mapping::
 }
 
 bool OmplPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
-                           PlanCertificate& cert) {
+                           Certificate& cert) {
   const auto t0 = std::chrono::steady_clock::now();
   plan.clear();
-  cert = PlanCertificate();
+  cert = Certificate();
   cert.planner = "OmplPlanner/" + planner_type_;
   const auto finish = [&](bool ok) {
     cert.success = ok;

@@ -57,8 +57,7 @@ double maxCurvature(const std::vector<Pose2D>& path, double spacing) {
   return kappa;
 }
 
-void fillPathFigures(const ConfigSpace& cs, const std::vector<Pose2D>& path,
-                     PlanCertificate& cert) {
+void fillPathFigures(const ConfigSpace& cs, const std::vector<Pose2D>& path, Certificate& cert) {
   cert.length = pathLength(path);
   cert.max_curvature = maxCurvature(path);
   cert.clearance.clear();
@@ -84,8 +83,9 @@ bool pathIsCollisionFree(const ConfigSpace& cs, const std::vector<Pose2D>& path)
     for (int k = 0; k <= n; ++k) {
       int ix, iy;
       const double t = static_cast<double>(k) / n;
-      if (!cs.worldToCell(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), ix, iy) ||
-          !cs.isFree(ix, iy)) {
+      const double x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y);
+      if (!cs.worldToCell(x, y, ix, iy) ||
+          cs.clearanceAt(x, y) < cs.params().min_clearance - 0.5 * cs.resolution()) {
         return false;
       }
     }

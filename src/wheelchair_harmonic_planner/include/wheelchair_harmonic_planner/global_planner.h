@@ -33,7 +33,7 @@ class GlobalPlanner {
   /// headings; on failure it is empty and certificate.failure_reason says why. The certificate
   /// is filled in both cases.
   virtual bool makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
-                        PlanCertificate& certificate) = 0;
+                        Certificate& certificate) = 0;
 
  protected:
   GlobalPlanner() = default;

@@ -20,7 +20,7 @@ class HarmonicPlanner : public GlobalPlanner {
   void initialize(const std::string& name, const wheelchair_mapping::OccupancyMap& map,
                   const ParameterMap& params) override;
   bool makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
-                PlanCertificate& certificate) override;
+                Certificate& certificate) override;
 
   /// The last solved potential (log u), e.g. for publishing; null before the first plan.
   const HarmonicSolution* solution() const { return solution_ ? &*solution_ : nullptr; }

@@ -13,11 +13,12 @@ namespace wheelchair_harmonic_planner {
 class OmplPlanner : public GlobalPlanner {
  public:
   /// Parameters: planner (RRTConnect | RRTstar | PRMstar | BITstar), time_limit [s],
-  /// simplify (bool), seed, plus the C-space parameters of configSpaceParams().
+  /// simplify (bool), seed (> 0: OMPL's global seed; effective only before the process's first
+  /// OMPL plan), plus the C-space parameters of configSpaceParams().
   void initialize(const std::string& name, const wheelchair_mapping::OccupancyMap& map,
                   const ParameterMap& params) override;
   bool makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
-                PlanCertificate& certificate) override;
+                Certificate& certificate) override;
 
  private:
   std::string name_;

@@ -18,9 +18,10 @@ double maxCurvature(const std::vector<Pose2D>& path, double spacing = 0.1);
 
 /// Fills length, curvature and the clearance profile (min and where) of a certificate.
 void fillPathFigures(const ConfigSpace& cspace, const std::vector<Pose2D>& path,
-                     PlanCertificate& certificate);
+                     Certificate& certificate);
 
-/// True if every segment of the path, sampled at a quarter cell, stays in free C-space cells.
+/// True if every segment of the path, sampled at a quarter cell, stays in the map with the
+/// minimum clearance (less half a cell of discretization): the footprint never meets a wall.
 bool pathIsCollisionFree(const ConfigSpace& cspace, const std::vector<Pose2D>& path);
 
 }  // namespace wheelchair_harmonic_planner

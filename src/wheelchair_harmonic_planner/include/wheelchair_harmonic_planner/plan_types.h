@@ -14,7 +14,7 @@ struct Pose2D {
 };
 
 /// What a plan proves about itself (issue 7): filled by every planner, published with the path.
-struct PlanCertificate {
+struct Certificate {
   bool success = false;
   std::string planner;         ///< plugin name, e.g. "HarmonicPlanner" or "OmplPlanner/RRTstar"
   std::string failure_reason;  ///< empty on success; one line naming the cause otherwise

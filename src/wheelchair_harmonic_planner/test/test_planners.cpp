@@ -1,0 +1,102 @@
+// The two planner plugins used directly (no ROS): the flat's 80 cm doorways, clearance where
+// space allows, failures with reasons, every OMPL planner on a maze.
+#include <wheelchair_harmonic_planner/harmonic_planner.h>
+#include <wheelchair_harmonic_planner/maze.h>
+#include <wheelchair_harmonic_planner/ompl_planner.h>
+#include <wheelchair_harmonic_planner/path_metrics.h>
+#include <wheelchair_mapping/map_io.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+using namespace wheelchair_harmonic_planner;
+
+namespace {
+
+double distanceTo(const Pose2D& p, double x, double y) { return std::hypot(p.x - x, p.y - y); }
+
+}  // namespace
+
+// Toilet (bathroom) to desk (study): through two 80 cm doors (flat.doors.yaml: hallway_bathroom
+// at (4.45, 7.2), hallway_study at (5.75, 7.4)) and the 1.2 m hallway between them.
+TEST(HarmonicPlanner, PassesThe80cmDoorsOfFlatAndKeeps20cmInOpenSpace) {
+  const std::string path = std::string(WORLDS_DIR) + "/flat.yaml";
+  if (!std::ifstream(path).good()) GTEST_SKIP() << "test world not found: " << path;
+  HarmonicPlanner planner;
+  planner.initialize("harmonic", wheelchair_mapping::loadMap(path), {{"inscribed_radius", "0.31"}});
+  std::vector<Pose2D> plan;
+  Certificate cert;
+  ASSERT_TRUE(planner.makePlan({2.90, 7.25, 0.0}, {8.80, 7.50, 0.0}, plan, cert))
+      << cert.failure_reason;
+  EXPECT_TRUE(cert.solver_converged);
+  EXPECT_TRUE(cert.descent_reached_goal);
+  EXPECT_GE(cert.min_clearance, 0.05 - 1e-6);
+  ASSERT_EQ(cert.clearance.size(), plan.size());
+  const double doors[2][2] = {{4.45, 7.2}, {5.75, 7.4}};
+  for (const auto& d : doors) {
+    double nearest = 1e9;
+    for (const Pose2D& p : plan) nearest = std::min(nearest, distanceTo(p, d[0], d[1]));
+    EXPECT_LT(nearest, 0.1) << "the path misses the door at " << d[0] << ", " << d[1];
+  }
+  // Away from the doorways (0.6 m) the free space allows 20 cm, and the path keeps it.
+  int open_points = 0;
+  for (size_t i = 0; i < plan.size(); ++i) {
+    if (distanceTo(plan[i], doors[0][0], doors[0][1]) < 0.6 ||
+        distanceTo(plan[i], doors[1][0], doors[1][1]) < 0.6)
+      continue;
+    ++open_points;
+    EXPECT_GE(cert.clearance[i], 0.20 - 0.01) << "at " << plan[i].x << ", " << plan[i].y;
+  }
+  EXPECT_GT(open_points, 20);
+}
+
+TEST(HarmonicPlanner, FailsClearlyForBadStartsAndGoals) {
+  auto map = makeCorridor(6.0, 1.2, 0.05);
+  for (int iy = 0; iy < map.height; ++iy) map.at(60, iy) = wheelchair_mapping::kOccupied;
+  for (GlobalPlanner* planner :
+       std::initializer_list<GlobalPlanner*>{new HarmonicPlanner, new OmplPlanner}) {
+    std::unique_ptr<GlobalPlanner> owner(planner);
+    planner->initialize("p", map, {{"time_limit", "0.2"}});
+    std::vector<Pose2D> plan;
+    Certificate cert;
+    const Pose2D ok{1.0, 0.7, 0.0};
+    EXPECT_FALSE(planner->makePlan(ok, {3.02, 0.7, 0.0}, plan, cert));
+    EXPECT_NE(cert.failure_reason.find("goal"), std::string::npos) << cert.failure_reason;
+    EXPECT_NE(cert.failure_reason.find("obstacle"), std::string::npos) << cert.failure_reason;
+    EXPECT_TRUE(plan.empty());
+    EXPECT_FALSE(planner->makePlan({-1.0, 0.7, 0.0}, ok, plan, cert));
+    EXPECT_NE(cert.failure_reason.find("outside the map"), std::string::npos);
+    EXPECT_FALSE(planner->makePlan(ok, {5.0, 0.7, 0.0}, plan, cert));  // beyond the wall
+    EXPECT_FALSE(cert.failure_reason.empty());
+    EXPECT_TRUE(plan.empty());
+    EXPECT_FALSE(planner->makePlan(ok, {NAN, 0.7, 0.0}, plan, cert));
+    EXPECT_NE(cert.failure_reason.find("not finite"), std::string::npos);
+  }
+}
+
+TEST(OmplPlanner, EveryPlannerFindsACollisionFreePathThroughAMaze) {
+  const auto maze = makeMaze(120, 16, 4, 3);
+  ConfigSpaceParams cp;
+  const ConfigSpace cs(maze, cp);
+  double sx, sy, gx, gy;
+  mazePassageCentre(0, 0, 16, 4, 0.05, sx, sy);
+  mazePassageCentre(4, 4, 16, 4, 0.05, gx, gy);
+  for (const std::string type : {"RRTConnect", "RRTstar", "PRMstar", "BITstar"}) {
+    OmplPlanner planner;
+    planner.initialize("ompl", maze,
+                       {{"planner", type}, {"time_limit", "1.0"}, {"simplify", "true"}});
+    std::vector<Pose2D> plan;
+    Certificate cert;
+    ASSERT_TRUE(planner.makePlan({sx, sy, 0.0}, {gx, gy, 1.0}, plan, cert))
+        << type << ": " << cert.failure_reason;
+    EXPECT_TRUE(pathIsCollisionFree(cs, plan)) << type;
+    EXPECT_NEAR(plan.back().x, gx, 1e-9);
+    EXPECT_DOUBLE_EQ(plan.back().yaw, 1.0);
+    // Sampling planners check motions at discrete steps: half a cell of tolerance.
+    EXPECT_GE(cert.min_clearance, 0.05 - 0.025) << type;
+  }
+  OmplPlanner bad;
+  EXPECT_THROW(bad.initialize("ompl", maze, {{"planner", "Dijkstra"}}), std::invalid_argument);
+}
