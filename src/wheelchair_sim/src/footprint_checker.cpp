@@ -19,17 +19,27 @@ bool insidePolygon(const std::vector<Eigen::Vector2d>& poly, const Eigen::Vector
 }
 
 FootprintChecker::FootprintChecker(std::vector<Eigen::Vector2d> footprint,
-                                   std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> world)
-    : world_(std::move(world)) {
+                                   std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> world) {
   if (footprint.size() < 3) throw std::invalid_argument("footprint needs >= 3 vertices");
-  if (!world_) throw std::invalid_argument("FootprintChecker needs a world grid");
-  const double res = world_->getResolution();
+  if (!world) throw std::invalid_argument("FootprintChecker needs a world grid");
+  x_min_ = world->getXMin();
+  y_min_ = world->getYMin();
+  resolution_ = world->getResolution();
+  size_x_ = static_cast<int>(world->getSizeX());
+  size_y_ = static_cast<int>(world->getSizeY());
+  blocked_.resize(static_cast<size_t>(size_x_) * size_y_);
+  for (int iy = 0; iy < size_y_; ++iy) {
+    for (int ix = 0; ix < size_x_; ++ix) {
+      blocked_[static_cast<size_t>(iy) * size_x_ + ix] = world->getCell(ix, iy) < kFreeThreshold;
+    }
+  }
+  const double res = resolution_;
   // Edges every half cell: nothing thicker than a cell can slip between two samples.
   for (size_t i = 0; i < footprint.size(); ++i) {
     const Eigen::Vector2d a = footprint[i];
     const Eigen::Vector2d b = footprint[(i + 1) % footprint.size()];
     const int n = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * res))));
-    for (int k = 0; k < n; ++k) samples_.push_back(a + (b - a) * (double(k) / n));
+    for (int k = 0; k < n; ++k) outline_.push_back(a + (b - a) * (double(k) / n));
   }
   // Interior every cell: catches obstacles already inside after a teleport.
   Eigen::Vector2d lo = footprint[0], hi = footprint[0];
@@ -39,28 +49,30 @@ FootprintChecker::FootprintChecker(std::vector<Eigen::Vector2d> footprint,
   }
   for (double x = lo.x() + 0.5 * res; x < hi.x(); x += res) {
     for (double y = lo.y() + 0.5 * res; y < hi.y(); y += res) {
-      if (insidePolygon(footprint, {x, y})) samples_.emplace_back(x, y);
+      if (insidePolygon(footprint, {x, y})) interior_.emplace_back(x, y);
     }
   }
 }
 
-bool FootprintChecker::blocked(double x, double y) const {
-  const double res = world_->getResolution();
-  const int ix = static_cast<int>(std::floor((x - world_->getXMin()) / res));
-  const int iy = static_cast<int>(std::floor((y - world_->getYMin()) / res));
-  if (ix < 0 || iy < 0 || ix >= static_cast<int>(world_->getSizeX()) ||
-      iy >= static_cast<int>(world_->getSizeY())) {
-    return true;
+bool FootprintChecker::anyBlocked(const std::vector<Eigen::Vector2d>& samples,
+                                  const Eigen::Vector3d& pose) const {
+  const double c = std::cos(pose.z()), s = std::sin(pose.z());
+  for (const auto& p : samples) {
+    const double x = pose.x() + c * p.x() - s * p.y(), y = pose.y() + s * p.x() + c * p.y();
+    const int ix = static_cast<int>(std::floor((x - x_min_) / resolution_));
+    const int iy = static_cast<int>(std::floor((y - y_min_) / resolution_));
+    if (ix < 0 || iy < 0 || ix >= size_x_ || iy >= size_y_) return true;
+    if (blocked_[static_cast<size_t>(iy) * size_x_ + ix]) return true;
   }
-  return world_->getCell(ix, iy) < kFreeThreshold;
+  return false;
+}
+
+bool FootprintChecker::outlineCollides(const Eigen::Vector3d& pose) const {
+  return anyBlocked(outline_, pose);
 }
 
 bool FootprintChecker::collides(const Eigen::Vector3d& pose) const {
-  const double c = std::cos(pose.z()), s = std::sin(pose.z());
-  for (const auto& p : samples_) {
-    if (blocked(pose.x() + c * p.x() - s * p.y(), pose.y() + s * p.x() + c * p.y())) return true;
-  }
-  return false;
+  return anyBlocked(outline_, pose) || anyBlocked(interior_, pose);
 }
 
 }  // namespace wheelchair_sim

@@ -44,7 +44,7 @@ void Simulator::integrate(double h) {
   applied_ = wheelTorques(command_, brake_, x_.tail<2>(), chair_, params_);
   x_ = wd::integrateRK4(x_, applied_, h, chair_);
   if (params_.slip_noise > 0.0) addSlip(x_.segment<2>(wd::kPsiR) - before.segment<2>(wd::kPsiR));
-  if (collides(pose())) {
+  if (checker_ && checker_->outlineCollides(pose())) {
     x_ = before;
     x_.tail<2>().setZero();
     collided_ = true;

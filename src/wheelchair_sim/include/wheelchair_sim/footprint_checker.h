@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
+
 #include <memory>
 #include <vector>
 
@@ -20,18 +22,21 @@ class FootprintChecker {
   FootprintChecker(std::vector<Eigen::Vector2d> footprint,
                    std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> world);
 
-  /// True if any sample of the footprint (edges every half cell, interior every cell) at
-  /// base_link pose (x, y, theta) lies on a blocking cell or outside the grid.
+  /// True if any sample of the footprint's edges (every half cell) at base_link pose
+  /// (x, y, theta) lies on a blocking cell or outside the grid. Enough while the chair moves
+  /// less than a cell per check: an obstacle can only enter through the outline.
+  bool outlineCollides(const Eigen::Vector3d& pose) const;
+
+  /// outlineCollides, plus the interior every cell (after a teleport).
   bool collides(const Eigen::Vector3d& pose) const;
 
-  /// The base_link sample points (for tests and visualization).
-  const std::vector<Eigen::Vector2d>& samples() const { return samples_; }
-
  private:
-  bool blocked(double x, double y) const;
+  bool anyBlocked(const std::vector<Eigen::Vector2d>& samples, const Eigen::Vector3d& pose) const;
 
-  std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> world_;
-  std::vector<Eigen::Vector2d> samples_;
+  double x_min_, y_min_, resolution_;
+  int size_x_, size_y_;
+  std::vector<uint8_t> blocked_;  ///< 1 per blocking cell, row-major (a copy: fast lookups)
+  std::vector<Eigen::Vector2d> outline_, interior_;
 };
 
 /// True if point p lies inside polygon `poly` (even-odd rule).
