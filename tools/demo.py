@@ -28,6 +28,7 @@ import rospy
 import tf2_ros
 import yaml
 from nav_msgs.msg import OccupancyGrid
+from tf2_msgs.msg import TFMessage
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 STARTUP_TIMEOUT = 20.0  # [s] for a node to show its first output
@@ -232,6 +233,23 @@ def take_snapshots(demo):
     return f"rviz snapshots {' and '.join(names)} ({sum(seconds) / len(seconds):.0f} s each)"
 
 
+def frames_with_two_parents(listen=2.0):
+    """{child: {(parent, publisher)}} for every frame that more than one parent claims on /tf or
+    /tf_static (a tf2 listener silently keeps whichever came last)."""
+    edges = {}
+
+    def record(message):
+        who = message._connection_header.get("callerid", "?")
+        for t in message.transforms:
+            edges.setdefault(t.child_frame_id.lstrip("/"), set()).add((t.header.frame_id.lstrip("/"), who))
+
+    subscribers = [rospy.Subscriber(topic, TFMessage, record, queue_size=100) for topic in ("/tf", "/tf_static")]
+    time.sleep(listen)  # static transforms are latched: they all arrive at once
+    for subscriber in subscribers:
+        subscriber.unregister()
+    return {child: parents for child, parents in edges.items() if len({p for p, _ in parents}) > 1}
+
+
 def dump_tf_tree(demo):
     """tf_tree.txt: every frame under its parent, with the transform and who broadcasts it."""
     frames = yaml.safe_load(demo.tf_buffer.all_frames_as_yaml()) or {}
@@ -254,7 +272,17 @@ def dump_tf_tree(demo):
     for root in roots:
         lines.append(root)
         walk(root, 1)
+    conflicts = frames_with_two_parents()
+    for child, parents in sorted(conflicts.items()):
+        lines.append(f"# ERROR: {child} has {len(parents)} parents: "
+                     + ", ".join(f"{parent} (from {who})" for parent, who in sorted(parents)))
     (demo.out / "tf_tree.txt").write_text("\n".join(lines) + "\n")
+    if conflicts:
+        child, parents = sorted(conflicts.items())[0]
+        raise DemoError(f"tf frame {child} has {len(parents)} parents ("
+                        + ", ".join(f"{parent} from {who}" for parent, who in sorted(parents))
+                        + "): a frame may have one parent only, otherwise lookups through it fail at "
+                        "random; see tf_tree.txt")
     for parent, child in (("map", "odom"), ("odom", "base_link"), ("base_link", "laser")):
         if demo.lookup(parent, child) is None:
             raise DemoError(f"the tf tree lacks {parent} -> {child} (REP-105); see tf_tree.txt")
@@ -266,8 +294,8 @@ STEPS = [
     ("map server", start_map_server),
     ("chair description", start_description),
     ("chair pose", place_chair),
-    ("tf tree", dump_tf_tree),
     ("rviz snapshots", take_snapshots),
+    ("tf tree", dump_tf_tree),
 ]
 
 
