@@ -14,7 +14,9 @@ void savePreviewPng(const mrpt::maps::COccupancyGridMap2D& grid, const std::stri
   for (int iy = 0; iy < h; ++iy) {
     uint8_t* row = image.ptr<uint8_t>(h - 1 - iy);
     for (int ix = 0; ix < w; ++ix) {
-      row[ix] = mrpt::maps::COccupancyGridMap2D::l2p_255(raw[static_cast<size_t>(iy) * w + ix]);
+      const auto logodds_free = raw[static_cast<size_t>(iy) * w + ix];
+      // More likely occupied than free (log-odds of free < 0): black.
+      row[ix] = logodds_free < 0 ? 0 : mrpt::maps::COccupancyGridMap2D::l2p_255(logodds_free);
     }
   }
   bool ok = false;
