@@ -168,6 +168,12 @@ void BaseDriverNodelet::onTimer(const ros::TimerEvent&) {
     publishStatus();  // 2 Hz refresh: counters change without a change of state
     last_status_time_ = now;
   }
+  if (isFault(state)) {
+    const TransportStats bus = transport_->stats();
+    NODELET_WARN_THROTTLE(5.0, "base driver braking: %s; %s is %s (%s)", driverStateName(state),
+                          transport_->describe().c_str(), busStateName(bus.state),
+                          bus.last_error.empty() ? "no bus error" : bus.last_error.c_str());
+  }
   const OdometryState& odo = core_->odometry();
   if (odo.stamp > last_odom_stamp_) {
     last_odom_stamp_ = odo.stamp;
