@@ -1,0 +1,195 @@
+// bench/kld measurement: KLD-MCL vs the same filter with a fixed particle count vs MRPT's
+// CMonteCarloLocalization2D with its own adaptive (KLD) sample size, on simulated drives in the
+// project's worlds. Prints only a JSON array of {case, method, metric, value, unit}.
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/slam/CMonteCarloLocalization2D.h>
+#include <wheelchair_kld/drive_evaluation.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using mrpt::math::TPose2D;
+using namespace wheelchair_kld;
+
+namespace {
+
+std::ostringstream json;
+bool first_row = true;
+
+void row(const std::string& c, const std::string& method, const std::string& metric, double value,
+         const std::string& unit) {
+  json << (first_row ? "" : ",\n") << "{\"case\":\"" << c << "\",\"method\":\"" << method
+       << "\",\"metric\":\"" << metric << "\",\"value\":" << value << ",\"unit\":\"" << unit
+       << "\"}";
+  first_row = false;
+}
+
+void report(const std::string& c, const std::string& method, const DriveSummary& s) {
+  row(c, method, "position_rms", 100 * s.rms_xy, "cm");
+  row(c, method, "heading_rms", s.rms_theta * 180 / M_PI, "deg");
+  row(c, method, "mean_particles", s.mean_particles, "particles");
+  row(c, method, "max_particles", s.max_particles, "particles");
+  row(c, method, "mean_update_time", s.mean_ms, "ms");
+  row(c, method, "p99_update_time", s.p99_ms, "ms");
+}
+
+mrpt::math::CMatrixDouble33 diagCov(double sxy, double sth) {
+  mrpt::math::CMatrixDouble33 c;
+  c.setZero();
+  c(0, 0) = c(1, 1) = sxy * sxy;
+  c(2, 2) = sth * sth;
+  return c;
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr toMrptObservation(const LaserScan& s) {
+  auto obs = mrpt::obs::CObservation2DRangeScan::Create();
+  obs->aperture = static_cast<float>(s.angle_increment * (s.ranges.size() - 1));
+  obs->rightToLeft = true;
+  obs->maxRange = static_cast<float>(s.range_max);
+  obs->sensorPose =
+      mrpt::poses::CPose3D(s.sensor_pose.x, s.sensor_pose.y, 0, s.sensor_pose.phi, 0, 0);
+  obs->resizeScan(s.ranges.size());
+  for (size_t i = 0; i < s.ranges.size(); ++i) {
+    const bool ok = std::isfinite(s.ranges[i]) && s.ranges[i] < s.range_max;
+    obs->setScanRange(i, ok ? s.ranges[i] : static_cast<float>(s.range_max));
+    obs->setScanRangeValidity(i, ok);
+  }
+  return obs;
+}
+
+/// MRPT's own particle filter with adaptive sample size, tracking from a box around `start`.
+std::vector<StepRecord> runMrpt(const LocalizationMap& map, const std::vector<DriveSample>& drive,
+                                const KldParams& kp) {
+  auto grid = mrpt::maps::COccupancyGridMap2D::Create(map.grid());
+  grid->likelihoodOptions.likelihoodMethod =
+      mrpt::maps::COccupancyGridMap2D::lmLikelihoodField_Thrun;
+  grid->likelihoodOptions.LF_decimation = kp.measurement.beam_step;
+  grid->likelihoodOptions.LF_stdHit = static_cast<float>(kp.measurement.sigma_hit);
+  grid->likelihoodOptions.LF_maxCorrsDistance = static_cast<float>(kp.measurement.max_distance);
+  mrpt::slam::CMonteCarloLocalization2D pdf;
+  pdf.options.metricMap = grid;
+  pdf.options.KLD_params.KLD_binSize_XY = kp.bin_xy;
+  pdf.options.KLD_params.KLD_binSize_PHI = kp.bin_theta;
+  pdf.options.KLD_params.KLD_epsilon = kp.epsilon;
+  pdf.options.KLD_params.KLD_delta = kp.delta;
+  pdf.options.KLD_params.KLD_minSampleSize = kp.min_particles;
+  pdf.options.KLD_params.KLD_maxSampleSize = kp.max_particles;
+  const TPose2D& t0 = drive.front().truth;
+  pdf.resetUniform(t0.x - 0.2, t0.x + 0.2, t0.y - 0.2, t0.y + 0.2, t0.phi - 0.1, t0.phi + 0.1,
+                   2000);
+  mrpt::bayes::CParticleFilter pf;
+  pf.m_options.adaptiveSampleSize = true;
+  pf.m_options.resamplingMethod = mrpt::bayes::CParticleFilter::prMultinomial;
+  pf.m_options.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
+  mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motion;
+  motion.modelSelection = mrpt::obs::CActionRobotMovement2D::mmThrun;
+  std::vector<StepRecord> out;
+  TPose2D last = drive.front().odom;
+  bool first = true;
+  for (const auto& s : drive) {
+    StepRecord r;
+    const mrpt::poses::CPose2D inc = mrpt::poses::CPose2D(s.odom) - mrpt::poses::CPose2D(last);
+    if (first || inc.norm() >= kp.update_min_d || std::abs(inc.phi()) >= kp.update_min_a) {
+      mrpt::obs::CActionCollection actions;
+      mrpt::obs::CActionRobotMovement2D act;
+      act.computeFromOdometry(inc, motion);
+      actions.insert(act);
+      mrpt::obs::CSensoryFrame sf;
+      sf.insert(toMrptObservation(s.scan));
+      const auto t0c = std::chrono::steady_clock::now();
+      pf.executeOn(pdf, &actions, &sf);
+      r.update_ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0c).count();
+      r.updated = true;
+      last = s.odom;
+      first = false;
+    }
+    mrpt::poses::CPose2D mean;
+    pdf.getMean(mean);
+    r.error_xy = std::hypot(mean.x() - s.truth.x, mean.y() - s.truth.y);
+    r.error_theta = std::abs(mrpt::math::wrapToPi(mean.phi() - s.truth.phi));
+    r.particles = static_cast<int>(pdf.size());
+    out.push_back(r);
+  }
+  return out;
+}
+
+/// Concatenated step records of several seeded drives.
+void append(std::vector<StepRecord>& all, const std::vector<StepRecord>& more, size_t skip) {
+  all.insert(all.end(), more.begin() + std::min(skip, more.size()), more.end());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string worlds = argc > 1 ? argv[1] : "test/worlds";
+  const int fixed_n = 2000;  // fixed-size MCL: the count that tracks as well as KLD here
+  const KldParams kp;
+  KldParams fixed = kp;
+  fixed.fixed_particles = fixed_n;
+  for (const std::string world : {"flat", "office"}) {
+    const auto map = std::make_shared<LocalizationMap>(
+        loadWorldGrid(worlds + "/" + world + ".yaml"), kp.measurement.max_distance);
+    std::vector<StepRecord> kld_all, fixed_all, mrpt_all;
+    for (uint32_t seed = 1; seed <= 3; ++seed) {
+      DriveParams dp;
+      dp.seed = seed;
+      const auto drive = simulateDrive(map->grid(), worldRoute(world), dp);
+      KldLocalizer kld(map, kp, seed), mcl(map, fixed, seed);
+      kld.initGaussian(drive[0].truth, diagCov(0.1, 0.05));
+      mcl.initGaussian(drive[0].truth, diagCov(0.1, 0.05));
+      append(kld_all, runDrive(kld, drive), 5);
+      append(fixed_all, runDrive(mcl, drive), 5);
+      append(mrpt_all, runMrpt(*map, drive, kp), 5);
+    }
+    const std::string c = world + "_tracking";
+    report(c, "kld", summarize(kld_all));
+    report(c, "fixed_mcl_" + std::to_string(fixed_n), summarize(fixed_all));
+    report(c, "mrpt_kld", summarize(mrpt_all));
+  }
+  // Global localization in the office: success = localized within 20 cm for good.
+  {
+    const auto map = std::make_shared<LocalizationMap>(loadWorldGrid(worlds + "/office.yaml"),
+                                                       kp.measurement.max_distance);
+    const int seeds = 20;
+    int ok = 0, worst = 0;
+    std::vector<StepRecord> all;
+    for (uint32_t seed = 1; seed <= seeds; ++seed) {
+      DriveParams dp;
+      dp.seed = seed;
+      KldLocalizer kld(map, kp, seed);
+      kld.initGlobal();
+      const auto steps = runDrive(kld, simulateDrive(map->grid(), worldRoute("office"), dp));
+      int updates = 0, at = -1;
+      for (const auto& r : steps) {
+        updates += r.updated;
+        const bool good = r.localized && r.error_xy < 0.2;
+        if (good && at < 0) at = updates;
+        if (!good) at = -1;
+      }
+      if (at > 0) {
+        ++ok;
+        worst = std::max(worst, at);
+      }
+      append(all, steps, 0);
+    }
+    const auto s = summarize(all);
+    row("office_global", "kld", "success", ok, "of 20");
+    row("office_global", "kld", "worst_updates_to_converge", worst, "updates");
+    row("office_global", "kld", "mean_particles", s.mean_particles, "particles");
+    row("office_global", "kld", "mean_update_time", s.mean_ms, "ms");
+    row("office_global", "kld", "p99_update_time", s.p99_ms, "ms");
+  }
+  std::cout << "[\n" << json.str() << "\n]\n";
+  return 0;
+}
