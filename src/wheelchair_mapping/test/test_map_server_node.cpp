@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/ros.h>
+#include <sys/wait.h>
+
+#include <cstdio>
 
 #include "child_process.h"
 #include "map_test_files.h"
@@ -45,6 +48,26 @@ TEST(MapServerNode, PublishesTheLatchedMapOfTheFile) {
   const auto meta = waitFor<nav_msgs::MapMetaData>("/map_metadata", 10.0);
   ASSERT_TRUE(meta);
   EXPECT_EQ(meta->width, 4u);
+}
+
+// With the file given as ~map_file instead of an argument, a bad file still ends the process
+// with one fatal line and exit code 1.
+TEST(MapServerNode, BadMapFileParameterExitsWithOneFatalLine) {
+  test::TempDir dir;
+  const std::string missing = dir.file("missing.yaml");
+  FILE* pipe =
+      popen(("rosrun wheelchair_mapping map_server __name:=bad_map_server _map_file:=" + missing +
+             " 2>&1")
+                .c_str(),
+            "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buf[512];
+  while (fgets(buf, sizeof buf, pipe)) output += buf;
+  const int status = pclose(pipe);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << output;
+  EXPECT_NE(output.find("FATAL"), std::string::npos) << output;
+  EXPECT_NE(output.find(missing + ": map file not found"), std::string::npos) << output;
 }
 
 }  // namespace
