@@ -17,6 +17,7 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -188,6 +189,8 @@ TEST_F(DriverNodeTest, CommandSilenceBrakesWithin100ms) {
   ASSERT_GT(braked_at, 0);
   // Watchdog 100 ms after the last message; allowance for the driver's 500 Hz timer, the
   // controller's 1 ms step and message transport in sim time.
+  RecordProperty("brake_delay_ms", std::to_string((braked_at - silent_since) * 1e3));
+  std::cerr << "brake " << (braked_at - silent_since) * 1e3 << " ms (sim) after the last message\n";
   EXPECT_GE(braked_at - silent_since, 0.1 - 1e-6);
   EXPECT_LE(braked_at - silent_since, 0.1 + 0.02);
   chair->waitUntil([this] { return statusMessage() == "command_timeout"; }, 0.5);
@@ -211,6 +214,8 @@ TEST_F(DriverNodeTest, HeartbeatLossFaults) {
   }
   ASSERT_GT(fault_at, 0) << statusMessage();
   // 200 ms after the last heartbeat, which was at most 50 ms before the silence.
+  RecordProperty("fault_delay_ms", std::to_string((fault_at - silent_since) * 1e3));
+  std::cerr << "fault " << (fault_at - silent_since) * 1e3 << " ms (sim) after the silence\n";
   EXPECT_LE(fault_at - silent_since, 0.2 + 0.02);
   EXPECT_GE(fault_at - silent_since, 0.2 - 0.05 - 1e-6);
   {
