@@ -127,10 +127,12 @@ std::string chairUrdf(const ChairParams& p) {
          "  <material name=\"seat\"><color rgba=\"0.10 0.20 0.45 1\"/></material>\n"
          "  <material name=\"tyre\"><color rgba=\"0.05 0.05 0.05 1\"/></material>\n"
          "  <material name=\"sensor\"><color rgba=\"0.90 0.75 0.10 1\"/></material>\n";
-  out << link(kBaseFootprintFrame);
+  // base_link is the root: odom -> base_link (REP-105, DESIGN.md); base_footprint hangs
+  // below it on the floor, so no frame ever has two parents.
   out << link(kBaseLinkFrame);
-  out << joint("base_footprint_joint", "fixed", kBaseFootprintFrame, kBaseLinkFrame,
-               origin(0.0, 0.0, r));
+  out << link(kBaseFootprintFrame);
+  out << joint("base_footprint_joint", "fixed", kBaseLinkFrame, kBaseFootprintFrame,
+               origin(0.0, 0.0, -r));
   out << link("body", body);
   out << joint("body_joint", "fixed", kBaseLinkFrame, "body", origin(-d, 0.0, 0.0));
   out << wheelLink("left_wheel", r, kWheelWidth, wheel_inertia);

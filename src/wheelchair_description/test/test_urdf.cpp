@@ -42,12 +42,13 @@ double yawOf(const urdf::Pose& pose) {
 /// Checks everything the rest of the stack relies on against the chair's parameters.
 void expectModelMatchesChair(const urdf::Model& model, const ChairParams& p) {
   ASSERT_TRUE(model.getRoot());
-  EXPECT_EQ(model.getRoot()->name, "base_footprint");
-  // base_link (P) is the axle centre, r above the floor.
+  EXPECT_EQ(model.getRoot()->name, "base_link");  // odom -> base_link owns the chair's tree
+  // base_link (P) is the axle centre, r above the floor (base_footprint).
   const auto footprint = model.getJoint("base_footprint_joint");
   ASSERT_TRUE(footprint);
-  EXPECT_EQ(footprint->child_link_name, "base_link");
-  EXPECT_DOUBLE_EQ(footprint->parent_to_joint_origin_transform.position.z, p.wheel_radius);
+  EXPECT_EQ(footprint->parent_link_name, "base_link");
+  EXPECT_EQ(footprint->child_link_name, "base_footprint");
+  EXPECT_DOUBLE_EQ(footprint->parent_to_joint_origin_transform.position.z, -p.wheel_radius);
   // Drive wheels: on the axle, track 2b, radius r, rolling forward for a positive angle.
   for (const auto& [name, side] : {std::pair<std::string, double>{"left_wheel_joint", 1.0},
                                    std::pair<std::string, double>{"right_wheel_joint", -1.0}}) {
