@@ -35,6 +35,9 @@ JerkLimitedProfile::JerkLimitedProfile(double length, std::vector<double> speed_
   if (!(length > 0.0) || speed_limit_.size() < 2 || !(limits.speed > 0.0) ||
       !(limits.accel > 0.0) || !(limits.jerk > 0.0) || !(dt > 0.0))
     throw std::invalid_argument("JerkLimitedProfile: non-positive length, limit or step");
+  limit_ahead_ = speed_limit_;
+  for (size_t i = limit_ahead_.size() - 1; i-- > 0;)
+    limit_ahead_[i] = std::min(limit_ahead_[i], limit_ahead_[i + 1]);
   ProfileSample x;
   x.v = std::max(0.0, v0);
   samples_.push_back(x);
@@ -78,6 +81,16 @@ bool JerkLimitedProfile::canBrake(const ProfileSample& start) const {
   constexpr double kSlack = 1e-3;
   const double kStep = dt_;  // the same discretization as the profile itself
   ProfileSample x = start;
+  // Upper bound of the braking distance (ramp to -accel, hold, release); with it the check is
+  // decided at once when the speed is below every limit ahead.
+  const double a = limits_.accel, j = limits_.jerk;
+  const double positive_a = std::max(0.0, x.a);
+  const double v_peak = x.v + positive_a * positive_a / (2.0 * j);
+  const double bound = v_peak * v_peak / (2.0 * a) + v_peak * (a / j + positive_a / j);
+  const size_t i0 =
+      std::min(limit_ahead_.size() - 1,
+               static_cast<size_t>(std::max(0.0, x.s) / length_ * (limit_ahead_.size() - 1)));
+  if (v_peak <= limit_ahead_[i0] && x.s + bound <= length_) return true;
   for (int i = 0; i < 100000 && (x.v > 0.0 || x.a > 0.0); ++i) {
     if (x.s > length_ + kSlack) return false;
     if (x.s < length_ && x.v > limitAt(x.s) + kSlack) return false;

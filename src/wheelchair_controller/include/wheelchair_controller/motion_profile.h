@@ -46,6 +46,7 @@ class JerkLimitedProfile {
 
   double length_;
   std::vector<double> speed_limit_;
+  std::vector<double> limit_ahead_;  ///< min of speed_limit_ from each sample to the end
   MotionLimits limits_;
   double dt_;
   std::vector<ProfileSample> samples_;

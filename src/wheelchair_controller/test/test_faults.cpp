@@ -1,0 +1,142 @@
+// Every fault ends in a controlled stop: decelerate within the comfort limits, then zero torque
+// and the brake. The chair is driven on the model until it cruises, then the fault is injected.
+#include <wheelchair_controller/path_tracker.h>
+#include <wheelchair_controller/test_paths.h>
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+namespace wc = wheelchair_controller;
+namespace wd = wheelchair_description;
+
+namespace {
+
+struct FaultRun {
+  wc::TrackerOutput last;
+  double speed_at_fault = 0.0;
+  double max_decel = 0.0;       ///< of the axle centre after the fault [m/s^2]
+  double time_to_brake = -1.0;  ///< after the fault [s]
+  bool torque_after_brake = false;
+};
+
+/// Drives a 6 m straight at 50 Hz; at t_fault, `inject` may change the pose given to the
+/// tracker (return nullopt for none) or call tracker methods.
+FaultRun run(const std::function<std::optional<wc::PoseMeasurement>(
+                 wc::PathTracker&, double t, const wc::PoseMeasurement& truth)>& inject) {
+  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  wc::PathTracker tracker(p, wc::TrackerConfig{});
+  tracker.setPath(wc::PathBuilder({0.0, 0.0, 0.0}).straight(6.0).poses());
+  wd::State x = wd::stateAtAxlePose(0.0, 0.0, 0.0, p);
+  FaultRun r;
+  const double t_fault = 4.0, dt = 0.02;
+  double prev_v = 0.0;
+  for (int k = 0; k < 1000; ++k) {
+    const double t = k * dt;
+    const wc::PoseMeasurement truth{t, wd::axlePose(x, p)};
+    std::optional<wc::PoseMeasurement> pose = truth;
+    if (t >= t_fault) pose = inject(tracker, t, truth);
+    r.last = tracker.update(t, pose, {t, x.tail<2>()});
+    const double v = wd::bodyVelocity(x.tail<2>(), p)(0);
+    if (std::abs(t - t_fault) < 1e-9) r.speed_at_fault = v;
+    if (t > t_fault) r.max_decel = std::max(r.max_decel, std::abs(v - prev_v) / dt);
+    prev_v = v;
+    if (r.last.command.brake && t >= t_fault) {
+      if (r.time_to_brake < 0.0) r.time_to_brake = t - t_fault;
+      x.tail<2>().setZero();
+    } else if (r.time_to_brake >= 0.0) {
+      r.torque_after_brake = true;
+    }
+    if (r.time_to_brake >= 0.0 && t > t_fault + r.time_to_brake + 0.5) break;
+    if (!r.last.command.brake) {
+      for (int i = 0; i < 20; ++i) x = wd::integrateRK4(x, r.last.command.torque, 1e-3, p);
+    }
+  }
+  return r;
+}
+
+void expectControlledStop(const FaultRun& r, const std::string& reason_part) {
+  EXPECT_GT(r.speed_at_fault, 0.5) << "the fault must hit a moving chair";
+  EXPECT_EQ(r.last.state, wc::TrackerState::kAborted);
+  EXPECT_NE(r.last.reason.find(reason_part), std::string::npos) << r.last.reason;
+  EXPECT_TRUE(r.last.command.brake);
+  EXPECT_EQ(r.last.command.torque, Eigen::Vector2d::Zero());
+  EXPECT_FALSE(r.torque_after_brake);
+  EXPECT_LE(r.max_decel, 0.5 * 1.05) << "decelerates within the comfort limit";
+  // From 0.8 m/s at 0.5 m/s^2 with jerk 1: ramp ~2.1 s, + detection (stale: 0.2 s) + the
+  // wheel-speed loop's tail to the 3 mm/s rest speed; never a jump (braking at speed).
+  EXPECT_GT(r.time_to_brake, r.speed_at_fault / 0.5);
+  EXPECT_LT(r.time_to_brake, r.speed_at_fault / 0.5 + 3.0);
+}
+
+}  // namespace
+
+TEST(Faults, NaNInPathStops) {
+  expectControlledStop(
+      run([](wc::PathTracker& tr, double t, const wc::PoseMeasurement& truth) {
+        if (std::abs(t - 4.0) < 1e-9) {
+          EXPECT_EQ(tr.setPath({{0, 0, 0}, {NAN, 1, 0}, {2, 0, 0}}), "non-finite pose in path");
+        }
+        return std::optional<wc::PoseMeasurement>(truth);
+      }),
+      "non-finite");
+}
+
+TEST(Faults, ZeroLengthPathStops) {
+  expectControlledStop(run([](wc::PathTracker& tr, double t, const wc::PoseMeasurement& truth) {
+                         if (std::abs(t - 4.0) < 1e-9) tr.setPath({{3, 0, 0}, {3, 0, 0}});
+                         return std::optional<wc::PoseMeasurement>(truth);
+                       }),
+                       "zero-length path");
+}
+
+TEST(Faults, EmptyPathStops) {
+  expectControlledStop(run([](wc::PathTracker& tr, double t, const wc::PoseMeasurement& truth) {
+                         if (std::abs(t - 4.0) < 1e-9) tr.setPath({});
+                         return std::optional<wc::PoseMeasurement>(truth);
+                       }),
+                       "empty path");
+}
+
+TEST(Faults, PoseJumpOfOneMetreStops) {
+  expectControlledStop(run([](wc::PathTracker&, double, wc::PoseMeasurement truth) {
+                         truth.pose.y() += 1.0;
+                         return std::optional<wc::PoseMeasurement>(truth);
+                       }),
+                       "pose jump");
+}
+
+TEST(Faults, StalePoseStops) {
+  // The pose stops arriving: the last one (t = 4 s) is repeated with its old stamp.
+  std::optional<wc::PoseMeasurement> frozen;
+  expectControlledStop(run([&](wc::PathTracker&, double, const wc::PoseMeasurement& truth) {
+                         if (!frozen) frozen = truth;
+                         return frozen;
+                       }),
+                       "stale pose");
+}
+
+TEST(Faults, LostLocalizationStops) {
+  expectControlledStop(run([](wc::PathTracker&, double, const wc::PoseMeasurement&) {
+                         return std::optional<wc::PoseMeasurement>();
+                       }),
+                       "localization lost");
+}
+
+TEST(Faults, NonFinitePoseStops) {
+  expectControlledStop(run([](wc::PathTracker&, double, wc::PoseMeasurement truth) {
+                         truth.pose.z() = NAN;
+                         return std::optional<wc::PoseMeasurement>(truth);
+                       }),
+                       "non-finite pose");
+}
+
+TEST(Faults, IdleTrackerHoldsTheBrake) {
+  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  wc::PathTracker tracker(p, wc::TrackerConfig{});
+  const wc::TrackerOutput out =
+      tracker.update(0.0, wc::PoseMeasurement{0.0, {0, 0, 0}}, {0.0, {0.0, 0.0}});
+  EXPECT_TRUE(out.command.brake);
+  EXPECT_EQ(out.command.torque, Eigen::Vector2d::Zero());
+  EXPECT_EQ(out.state, wc::TrackerState::kIdle);
+}
