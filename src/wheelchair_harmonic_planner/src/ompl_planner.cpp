@@ -29,7 +29,7 @@ ob::PlannerPtr makeOmplPlanner(const std::string& type, const ob::SpaceInformati
   if (type == "RRTstar") return std::make_shared<og::RRTstar>(si);
   if (type == "PRMstar") return std::make_shared<og::PRMstar>(si);
   if (type == "BITstar") return std::make_shared<og::BITstar>(si);
-  throw std::invalid_argument("OmplPlanner: unknown planner '" + type +
+  throw std::invalid_argument("OmplPlanner: unknown algorithm '" + type +
                               "' (RRTConnect, RRTstar, PRMstar, BITstar)");
 }
 
@@ -38,7 +38,7 @@ ob::PlannerPtr makeOmplPlanner(const std::string& type, const ob::SpaceInformati
 void OmplPlanner::initialize(const std::string& name, const wheelchair_mapping::OccupancyMap& map,
                              const ParameterMap& params) {
   name_ = name;
-  planner_type_ = getParam(params, "planner", planner_type_);
+  planner_type_ = getParam(params, "algorithm", planner_type_);
   time_limit_ = getParam(params, "time_limit", time_limit_);
   simplify_ = getParam(params, "simplify", simplify_);
   if (!(time_limit_ > 0.0)) throw std::invalid_argument("OmplPlanner: time_limit must be > 0");

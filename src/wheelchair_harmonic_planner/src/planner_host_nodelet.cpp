@@ -92,6 +92,9 @@ class PlannerHostNodelet : public nodelet::Nodelet {
       const std::string key = full.substr(prefix.size());
       XmlRpc::XmlRpcValue v;
       if (key.find('/') != std::string::npos || !pnh.getParam(key, v)) continue;
+      if (key == "planner" || key == "map_frame" || key == "base_frame" || key == "max_pose_age" ||
+          key == "chair_params")
+        continue;  // the host's own
       switch (v.getType()) {
         case XmlRpc::XmlRpcValue::TypeDouble:
           params_[key] = std::to_string(double(v));

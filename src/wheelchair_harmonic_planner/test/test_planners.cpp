@@ -86,7 +86,7 @@ TEST(OmplPlanner, EveryPlannerFindsACollisionFreePathThroughAMaze) {
   for (const std::string type : {"RRTConnect", "RRTstar", "PRMstar", "BITstar"}) {
     OmplPlanner planner;
     planner.initialize("ompl", maze,
-                       {{"planner", type}, {"time_limit", "1.0"}, {"simplify", "true"}});
+                       {{"algorithm", type}, {"time_limit", "1.0"}, {"simplify", "true"}});
     std::vector<Pose2D> plan;
     Certificate cert;
     ASSERT_TRUE(planner.makePlan({sx, sy, 0.0}, {gx, gy, 1.0}, plan, cert))
@@ -98,5 +98,5 @@ TEST(OmplPlanner, EveryPlannerFindsACollisionFreePathThroughAMaze) {
     EXPECT_GE(cert.min_clearance, 0.05 - 0.025) << type;
   }
   OmplPlanner bad;
-  EXPECT_THROW(bad.initialize("ompl", maze, {{"planner", "Dijkstra"}}), std::invalid_argument);
+  EXPECT_THROW(bad.initialize("ompl", maze, {{"algorithm", "Dijkstra"}}), std::invalid_argument);
 }

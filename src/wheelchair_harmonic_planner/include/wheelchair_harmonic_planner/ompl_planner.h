@@ -1,5 +1,5 @@
 // A sampling-based planner plugin on the same hard C-space as the harmonic planner, for
-// comparison: OMPL's RRTConnect, RRT*, PRM* or BIT* (parameter `planner`), with a time limit
+// comparison: OMPL's RRTConnect, RRT*, PRM* or BIT* (parameter `algorithm`), with a time limit
 // and OMPL's path simplification.
 #pragma once
 
@@ -12,7 +12,7 @@ namespace wheelchair_harmonic_planner {
 
 class OmplPlanner : public GlobalPlanner {
  public:
-  /// Parameters: planner (RRTConnect | RRTstar | PRMstar | BITstar), time_limit [s],
+  /// Parameters: algorithm (RRTConnect | RRTstar | PRMstar | BITstar), time_limit [s],
   /// simplify (bool), seed (> 0: OMPL's global seed; effective only before the process's first
   /// OMPL plan), plus the C-space parameters of configSpaceParams().
   void initialize(const std::string& name, const wheelchair_mapping::OccupancyMap& map,

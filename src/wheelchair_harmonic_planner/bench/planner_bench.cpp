@@ -1,0 +1,194 @@
+// Measuring binary of bench/planners: one case (a world or a generated maze), every method,
+// JSON objects {"case","method","metric","value","unit"} on stdout (one per line, the run script
+// joins them), and optionally a PNG with the paths over the map.
+#include <wheelchair_harmonic_planner/harmonic_planner.h>
+#include <wheelchair_harmonic_planner/maze.h>
+#include <wheelchair_harmonic_planner/ompl_planner.h>
+#include <wheelchair_harmonic_planner/path_metrics.h>
+#include <wheelchair_mapping/map_io.h>
+#include <wheelchair_mapping/mrpt_conversions.h>
+
+#include <mrpt/nav/planners/PlannerSimple2D.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <queue>
+#include <string>
+
+using namespace wheelchair_harmonic_planner;
+
+namespace {
+
+std::string case_name;
+
+void emit(const std::string& method, const std::string& metric, double value,
+          const std::string& unit) {
+  printf(
+      "{\"case\": \"%s\", \"method\": \"%s\", \"metric\": \"%s\", \"value\": %.6g, \"unit\": "
+      "\"%s\"}\n",
+      case_name.c_str(), method.c_str(), metric.c_str(), std::isfinite(value) ? value : -1.0,
+      unit.c_str());
+}
+
+/// Shortest path length on the 8-connected free cells of the hard C-space (Dijkstra) [m].
+double gridShortest(const ConfigSpace& cs, const Pose2D& s, const Pose2D& g) {
+  int sx, sy, gx, gy;
+  if (!cs.worldToCell(s.x, s.y, sx, sy) || !cs.worldToCell(g.x, g.y, gx, gy)) return NAN;
+  std::vector<double> dist(static_cast<size_t>(cs.width()) * cs.height(), INFINITY);
+  using Item = std::pair<double, size_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
+  dist[cs.index(sx, sy)] = 0.0;
+  q.push({0.0, cs.index(sx, sy)});
+  while (!q.empty()) {
+    const auto [d, k] = q.top();
+    q.pop();
+    if (d > dist[k]) continue;
+    const int x = static_cast<int>(k % cs.width()), y = static_cast<int>(k / cs.width());
+    if (x == gx && y == gy) return d * cs.resolution();
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        if ((dx || dy) && cs.isFree(x + dx, y + dy)) {
+          const double nd = d + ((dx && dy) ? M_SQRT2 : 1.0);
+          if (nd < dist[cs.index(x + dx, y + dy)]) {
+            dist[cs.index(x + dx, y + dy)] = nd;
+            q.push({nd, cs.index(x + dx, y + dy)});
+          }
+        }
+      }
+  }
+  return NAN;
+}
+
+void report(const std::string& method, bool ok, double seconds, const std::vector<Pose2D>& path,
+            const ConfigSpace& cs, double shortest) {
+  emit(method, "success", ok ? 1.0 : 0.0, "bool");
+  emit(method, "time", seconds * 1e3, "ms");
+  if (!ok) return;
+  Certificate c;
+  fillPathFigures(cs, path, c);
+  emit(method, "length", c.length, "m");
+  emit(method, "length_vs_shortest", c.length / shortest, "ratio");
+  emit(method, "min_clearance", c.min_clearance, "m");
+  emit(method, "max_curvature", c.max_curvature, "1/m");
+}
+
+double seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+// Usage: planner_bench CASE (world.yaml | mazeN) SX SY GX GY [png] [jacobi_max_sweeps]
+int main(int argc, char** argv) {
+  if (argc < 6) {
+    fprintf(stderr, "usage: planner_bench <world.yaml|mazeN> sx sy gx gy [out.png] [jacobi]\n");
+    return 2;
+  }
+  const std::string what = argv[1];
+  const bool maze = what.rfind("maze", 0) == 0;
+  const wheelchair_mapping::OccupancyMap map =
+      maze ? makeMaze(std::stoi(what.substr(4)), 24, 4, 1) : wheelchair_mapping::loadMap(what);
+  case_name = maze ? what : what.substr(what.find_last_of('/') + 1);
+  Pose2D start{std::stod(argv[2]), std::stod(argv[3]), 0.0};
+  Pose2D goal{std::stod(argv[4]), std::stod(argv[5]), 0.0};
+  if (maze) {  // passage indices -> world
+    const int n = (map.width - 4) / 28;
+    auto idx = [&](double v) { return v < 0 ? n + static_cast<int>(v) : static_cast<int>(v); };
+    mazePassageCentre(idx(start.x), idx(start.y), 24, 4, map.resolution, start.x, start.y);
+    mazePassageCentre(idx(goal.x), idx(goal.y), 24, 4, map.resolution, goal.x, goal.y);
+  }
+  const ParameterMap common{{"inscribed_radius", "0.31"}, {"seed", "1"}};
+  const ConfigSpace cs(map, configSpaceParams(common));
+  const double shortest = gridShortest(cs, start, goal);
+  emit("grid_dijkstra", "length", shortest, "m");
+  std::vector<std::pair<std::string, std::vector<Pose2D>>> drawn;
+
+  {  // harmonic: cold plan (C-space + solve + descent), then a replan from another start
+    HarmonicPlanner planner;
+    const auto t0 = std::chrono::steady_clock::now();
+    planner.initialize("harmonic", map, common);
+    std::vector<Pose2D> plan;
+    Certificate cert;
+    const bool ok = planner.makePlan(start, goal, plan, cert);
+    report("harmonic", ok, seconds(t0), plan, cs, shortest);
+    emit("harmonic", "solver_sweeps", cert.solver_iterations, "sweeps");
+    emit("harmonic", "solver_residual", cert.solver_residual, "relative");
+    if (ok) drawn.push_back({"harmonic", plan});
+  }
+  for (const std::string algo : {"RRTConnect", "RRTstar", "PRMstar", "BITstar"}) {
+    OmplPlanner planner;
+    ParameterMap p = common;
+    p["algorithm"] = algo;
+    p["time_limit"] = algo == "RRTConnect" ? "5.0" : "2.0";
+    const auto t0 = std::chrono::steady_clock::now();
+    planner.initialize("ompl", map, p);
+    std::vector<Pose2D> plan;
+    Certificate cert;
+    const bool ok = planner.makePlan(start, goal, plan, cert);
+    report("ompl_" + algo, ok, seconds(t0), plan, cs, shortest);
+    if (ok) drawn.push_back({algo, plan});
+  }
+  {  // MRPT's grid planner (wavefront on the occupancy grid, circular robot)
+    mrpt::nav::PlannerSimple2D planner;
+    planner.robotRadius = 0.36f;  // inscribed radius + minimum clearance
+    planner.minStepInReturnedPath = 0.05f;
+    const auto grid = wheelchair_mapping::toMrptGrid(map);
+    std::deque<mrpt::math::TPoint2D> raw;
+    bool not_found = true;
+    const auto t0 = std::chrono::steady_clock::now();
+    planner.computePath(grid, mrpt::poses::CPose2D(start.x, start.y, 0),
+                        mrpt::poses::CPose2D(goal.x, goal.y, 0), raw, not_found);
+    const double t = seconds(t0);
+    std::vector<Pose2D> plan;
+    for (const auto& p : raw) plan.push_back({p.x, p.y, 0.0});
+    report("mrpt_PlannerSimple2D", !not_found && !plan.empty(), t, plan, cs, shortest);
+    if (!not_found) drawn.push_back({"mrpt", plan});
+  }
+  const int jacobi_max = argc > 7 ? std::stoi(argv[7]) : 0;
+  if (jacobi_max > 0) {  // the paper's plain Jacobi, on the sizes where it can finish
+    int gx, gy;
+    cs.worldToCell(goal.x, goal.y, gx, gy);
+    const auto t0 = std::chrono::steady_clock::now();
+    const JacobiResult j = solvePaperJacobi(cs, gx, gy, 1e-9, jacobi_max);
+    const double t = seconds(t0);
+    HarmonicSolution as_log;
+    as_log.width = cs.width();
+    as_log.height = cs.height();
+    as_log.goal_ix = gx;
+    as_log.goal_iy = gy;
+    as_log.log_u.resize(j.phi.size());
+    for (size_t k = 0; k < j.phi.size(); ++k)
+      as_log.log_u[k] = cs.freeMask()[k] && j.phi[k] < 1.0 ? std::log(1.0 - j.phi[k]) : -INFINITY;
+    const DescentResult d = descend(cs, as_log, start.x, start.y);
+    report("paper_jacobi", d.reached_goal, t, d.path, cs, shortest);
+    emit("paper_jacobi", "sweeps", j.iterations, "sweeps");
+    emit("paper_jacobi", "converged", j.converged ? 1.0 : 0.0, "bool");
+  }
+  if (argc > 6 && std::string(argv[6]) != "-") {
+    cv::Mat img(map.height, map.width, CV_8UC3);
+    for (int iy = 0; iy < map.height; ++iy)
+      for (int ix = 0; ix < map.width; ++ix) {
+        const int v = map.at(ix, iy);
+        const uchar g = v < 0 ? 160 : (v >= 50 ? 0 : (cs.isFree(ix, iy) ? 255 : 215));
+        img.at<cv::Vec3b>(map.height - 1 - iy, ix) = cv::Vec3b(g, g, g);
+      }
+    const cv::Scalar colours[] = {{0, 0, 255},   {255, 0, 0},   {0, 160, 0},
+                                  {255, 0, 255}, {0, 160, 255}, {128, 128, 0}};
+    for (size_t m = 0; m < drawn.size(); ++m) {
+      for (size_t i = 1; i < drawn[m].second.size(); ++i) {
+        auto px = [&](const Pose2D& p) {
+          return cv::Point(static_cast<int>(p.x / map.resolution),
+                           map.height - 1 - static_cast<int>(p.y / map.resolution));
+        };
+        cv::line(img, px(drawn[m].second[i - 1]), px(drawn[m].second[i]), colours[m % 6], 1);
+      }
+      cv::putText(img, drawn[m].first, cv::Point(5, 15 + 14 * static_cast<int>(m)),
+                  cv::FONT_HERSHEY_SIMPLEX, 0.4, colours[m % 6], 1);
+    }
+    cv::imwrite(argv[6], img);
+  }
+  return 0;
+}
