@@ -1,0 +1,81 @@
+// `rosrun wheelchair_bringup wheelchair [config.yaml]`: the whole chair in one process.
+// One nodelet manager loads the map server, localizer, planner host, controller, base driver,
+// supervisor and rider interface listed in the bring-up file, each with its parameters, so
+// messages pass between them as shared pointers (no copies, no serialization).
+#include <wheelchair_bringup/bringup_config.h>
+
+#include <nodelet/loader.h>
+#include <ros/package.h>
+#include <ros/ros.h>
+#include <xmlrpcpp/XmlRpcValue.h>
+
+namespace {
+
+/// yaml-cpp node -> XmlRpc value for the parameter server (ints, doubles, bools, strings,
+/// lists, maps).
+XmlRpc::XmlRpcValue toXmlRpc(const YAML::Node& node) {
+  if (node.IsSequence()) {
+    XmlRpc::XmlRpcValue list;
+    list.setSize(static_cast<int>(node.size()));
+    for (size_t i = 0; i < node.size(); ++i) list[static_cast<int>(i)] = toXmlRpc(node[i]);
+    return list;
+  }
+  if (node.IsMap()) {
+    XmlRpc::XmlRpcValue map;
+    for (const auto& item : node) map[item.first.as<std::string>()] = toXmlRpc(item.second);
+    return map;
+  }
+  const std::string text = node.Scalar();
+  if (node.Tag() != "!") {  // unquoted scalars may be numbers or booleans
+    int integer;
+    double real;
+    bool flag;
+    if (YAML::convert<int>::decode(node, integer) && text.find('.') == std::string::npos)
+      return XmlRpc::XmlRpcValue(integer);
+    if (YAML::convert<double>::decode(node, real)) return XmlRpc::XmlRpcValue(real);
+    if (YAML::convert<bool>::decode(node, flag)) return XmlRpc::XmlRpcValue(flag);
+  }
+  return XmlRpc::XmlRpcValue(text);
+}
+
+void setParams(const std::string& ns, const YAML::Node& params) {
+  if (!params || !params.IsMap()) return;
+  for (const auto& item : params)
+    ros::param::set(ns + "/" + item.first.as<std::string>(), toXmlRpc(item.second));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "wheelchair");
+  std::vector<std::string> args;
+  ros::removeROSArgs(argc, argv, args);
+  const std::string config_path =
+      args.size() > 1 ? args[1]
+                      : ros::package::getPath("wheelchair_bringup") + "/config/chair_sim.yaml";
+  wheelchair_bringup::BringupConfig config;
+  try {
+    config = wheelchair_bringup::loadBringupConfig(config_path, &ros::package::getPath);
+  } catch (const std::exception& e) {
+    ROS_FATAL("%s", e.what());
+    return 1;
+  }
+  setParams("", config.global_params);
+  nodelet::Loader loader(true);  // a manager others could also load into
+  const nodelet::V_string no_argv;
+  for (const auto& spec : config.nodelets) {
+    const std::string name = ros::names::resolve(spec.name);
+    setParams(name, spec.params);
+    nodelet::M_string remaps;
+    for (const auto& [from, to] : spec.remaps)
+      remaps[ros::names::resolve(from)] = ros::names::resolve(to);
+    if (!loader.load(name, spec.type, remaps, no_argv)) {
+      ROS_FATAL("%s: could not load nodelet %s (%s)", config_path.c_str(), name.c_str(),
+                spec.type.c_str());
+      return 1;
+    }
+    ROS_INFO("loaded %s (%s)", name.c_str(), spec.type.c_str());
+  }
+  ros::spin();
+  return 0;
+}

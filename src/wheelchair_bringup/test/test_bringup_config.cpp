@@ -1,0 +1,66 @@
+// The bring-up file: nodelets, parameters, remaps, $(find) and clear errors.
+#include <wheelchair_bringup/bringup_config.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+using namespace wheelchair_bringup;
+
+namespace {
+
+std::string findFake(const std::string& package) {
+  return package == "wheelchair_test" ? "/opt/share/wheelchair_test" : "";
+}
+
+std::string writeTemp(const std::string& text) {
+  const std::string path = ::testing::TempDir() + "bringup_test.yaml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+}  // namespace
+
+TEST(BringupConfig, ReadsNodeletsParamsAndRemaps) {
+  const std::string path = writeTemp(
+      "params: {use_sim_time: true}\n"
+      "nodelets:\n"
+      "  - name: map_server\n"
+      "    type: wheelchair_mapping/MapServerNodelet\n"
+      "    params: {map_file: $(find wheelchair_test)/worlds/flat.yaml, rate: 2.5, "
+      "list: [1, $(find wheelchair_test)]}\n"
+      "  - name: hmi\n"
+      "    type: wheelchair_hmi/HmiNodelet\n"
+      "    remap: {switch: /tongue/switch}\n");
+  const BringupConfig config = loadBringupConfig(path, findFake);
+  ASSERT_EQ(config.nodelets.size(), 2u);
+  EXPECT_TRUE(config.global_params["use_sim_time"].as<bool>());
+  EXPECT_EQ(config.nodelets[0].type, "wheelchair_mapping/MapServerNodelet");
+  EXPECT_EQ(config.nodelets[0].params["map_file"].as<std::string>(),
+            "/opt/share/wheelchair_test/worlds/flat.yaml");
+  EXPECT_DOUBLE_EQ(config.nodelets[0].params["rate"].as<double>(), 2.5);
+  EXPECT_EQ(config.nodelets[0].params["list"][1].as<std::string>(), "/opt/share/wheelchair_test");
+  EXPECT_EQ(config.nodelets[1].remaps.at("switch"), "/tongue/switch");
+  std::remove(path.c_str());
+}
+
+TEST(BringupConfig, BadFilesNameTheFileAndTheProblem) {
+  const auto expectError = [](const std::string& text, const std::string& fragment) {
+    const std::string path = writeTemp(text);
+    try {
+      loadBringupConfig(path, findFake);
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).rfind(path, 0), 0u) << e.what();
+    }
+  };
+  expectError("params: {}\n", "no 'nodelets'");
+  expectError("nodelets:\n  - {name: a}\n", "without name/type");
+  expectError("nodelets:\n  - {name: a, type: x/A}\n  - {name: a, type: x/B}\n", "used twice");
+  expectError("nodelets:\n  - {name: a, type: x/A, params: {f: $(find nope)/x}}\n",
+              "package 'nope' not found");
+  expectError("nodelets: [\n", "bad YAML");
+  EXPECT_THROW(loadBringupConfig("/nonexistent/chair.yaml", findFake), std::runtime_error);
+}
