@@ -1,0 +1,50 @@
+// libFuzzer target for the decoder and the driver's receive path (optional; the seeded gtest
+// Fuzz.* is the one in the suite). Each 13-byte chunk of the input is one frame:
+// id (2, LE, 11 bits), flags (1: bit0 extended, bit1 remote, bit2 error), dlc (1, mod 9), data (8),
+// time step (1, x 0.1 ms). Build and run:
+//   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -Iinclude \
+//     test/libfuzzer_receive_path.cpp src/*.cpp -o /tmp/fuzz_rx && /tmp/fuzz_rx -runs=1000000
+#include <wheelchair_base_driver/base_driver_core.h>
+#include <wheelchair_base_driver/fake_bus.h>
+
+#include <cmath>
+#include <cstdlib>
+
+using namespace wheelchair_base_driver;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  auto bus = FakeBus::create();
+  auto port = bus->connect("driver");
+  auto monitor = bus->connect("monitor", 1u << 16);
+  DriverConfig config;
+  config.geometry = {0.17, 0.275, 4096, 40};
+  config.max_torque = 50;
+  BaseDriverCore driver(config, *port);
+  double now = 0;
+  driver.onTorqueMessage(3.0, -2.0, false, 0, now);
+  for (std::size_t i = 0; i + 13 <= size; i += 13) {
+    const std::uint8_t* p = data + i;
+    CanFrame f;
+    f.id = (p[0] | (p[1] << 8)) & 0x7FF;
+    f.extended = p[2] & 1;
+    f.remote = p[2] & 2;
+    f.error = p[2] & 4;
+    f.dlc = p[3] % 9;
+    for (int k = 0; k < 8; ++k) f.data[k] = p[4 + k];
+    now += p[12] * 1e-4;
+    protocol::Message m;
+    protocol::decode(f, &m);
+    driver.processFrame(f, now);
+    if (p[12] & 1) driver.onTorqueMessage(3.0, -2.0, false, 0, now);
+    driver.spinOnce(now);
+    const protocol::TorqueCommand& c = driver.lastCommand();
+    // Only the commanded torques or a brake may ever be sent.
+    const bool commanded =
+        c.enable && !c.brake && std::abs(c.left - 3.0) < 0.006 && std::abs(c.right + 2.0) < 0.006;
+    const bool braking = !c.enable && c.brake && c.left == 0.0 && c.right == 0.0;
+    if (!(commanded || braking)) std::abort();
+    if (driver.controllerFaults() != 0 && !braking) std::abort();
+    if (!std::isfinite(driver.odometry().x)) std::abort();
+  }
+  return 0;
+}
