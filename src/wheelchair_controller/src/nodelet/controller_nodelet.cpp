@@ -1,0 +1,133 @@
+#include <wheelchair_controller/controller_nodelet.h>
+#include <wheelchair_controller/wheel_speed_estimator.h>
+
+#include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/Vector3Stamped.h>
+#include <std_msgs/String.h>
+#include <tf2/utils.h>
+#include <wheelchair_msgs/WheelTorques.h>
+#include <pluginlib/class_list_macros.hpp>
+
+#include <cmath>
+
+namespace wheelchair_controller {
+
+namespace {
+
+/// yaw of a quaternion; NaN when it is not finite or has zero norm.
+double yawOf(const geometry_msgs::Quaternion& q) {
+  const double n = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+  if (!std::isfinite(n) || n < 1e-9) return NAN;
+  return tf2::getYaw(q);
+}
+
+}  // namespace
+
+void ControllerNodelet::onInit() {
+  ros::NodeHandle& nh = getNodeHandle();
+  ros::NodeHandle& pnh = getPrivateNodeHandle();
+  chair_ = wheelchair_description::loadChairParams(
+      pnh.param("chair_params", wheelchair_description::defaultChairParamsPath()));
+  TrackerConfig cfg;
+  pnh.param("natural_frequency", cfg.natural_frequency, cfg.natural_frequency);
+  pnh.param("damping", cfg.damping, cfg.damping);
+  pnh.param("max_speed", cfg.path_limits.longitudinal.speed, cfg.path_limits.longitudinal.speed);
+  pnh.param("max_accel", cfg.path_limits.longitudinal.accel, cfg.path_limits.longitudinal.accel);
+  pnh.param("max_jerk", cfg.path_limits.longitudinal.jerk, cfg.path_limits.longitudinal.jerk);
+  pnh.param("stale_pose_timeout", cfg.stale_pose_timeout, cfg.stale_pose_timeout);
+  pnh.param("stale_odometry_timeout", cfg.stale_odometry_timeout, cfg.stale_odometry_timeout);
+  pnh.param("pose_jump", cfg.pose_jump, cfg.pose_jump);
+  pnh.param("dynamic_terms", cfg.dynamic_terms, cfg.dynamic_terms);
+  cfg.stop.linear.accel = cfg.path_limits.longitudinal.accel;
+  cfg.stop.linear.jerk = cfg.path_limits.longitudinal.jerk;
+  tracker_ = std::make_unique<PathTracker>(chair_, cfg);
+  map_frame_ = pnh.param<std::string>("map_frame", "map");
+  base_frame_ = pnh.param<std::string>("base_frame", "base_link");
+  const double rate = pnh.param("rate", 50.0);
+
+  tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_);
+  torque_pub_ = nh.advertise<wheelchair_msgs::WheelTorques>("wheel_torques", 10);
+  reference_pub_ = pnh.advertise<geometry_msgs::PointStamped>("reference", 10);
+  error_pub_ = pnh.advertise<geometry_msgs::Vector3Stamped>("tracking_error", 10);
+  status_pub_ = pnh.advertise<std_msgs::String>("status", 10, true);
+  path_sub_ = nh.subscribe("plan", 1, &ControllerNodelet::onPath, this);
+  odom_sub_ = nh.subscribe("odom", 10, &ControllerNodelet::onOdometry, this);
+  timer_ = nh.createTimer(ros::Duration(1.0 / rate), &ControllerNodelet::onTimer, this);
+}
+
+void ControllerNodelet::onPath(const nav_msgs::Path::ConstPtr& msg) {
+  std::vector<Pose2> poses;
+  for (const auto& p : msg->poses)
+    poses.emplace_back(p.pose.position.x, p.pose.position.y, yawOf(p.pose.orientation));
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!msg->header.frame_id.empty() && msg->header.frame_id != map_frame_) {
+    tracker_->abort("path in frame '" + msg->header.frame_id + "', expected '" + map_frame_ + "'");
+  } else {
+    tracker_->setPath(poses);
+  }
+  if (!tracker_->reason().empty())
+    NODELET_WARN("controller: path rejected: %s", tracker_->reason().c_str());
+}
+
+void ControllerNodelet::onOdometry(const nav_msgs::Odometry::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  wheels_.stamp = msg->header.stamp.toSec();
+  wheels_.eta = wheelSpeedsFromTwist(msg->twist.twist.linear.x, msg->twist.twist.angular.z, chair_);
+}
+
+std::optional<PoseMeasurement> ControllerNodelet::lookupPose() {
+  try {
+    const geometry_msgs::TransformStamped t =
+        tf_buffer_.lookupTransform(map_frame_, base_frame_, ros::Time(0));
+    return PoseMeasurement{
+        t.header.stamp.toSec(),
+        {t.transform.translation.x, t.transform.translation.y, yawOf(t.transform.rotation)}};
+  } catch (const tf2::TransformException&) {
+    return std::nullopt;
+  }
+}
+
+void ControllerNodelet::onTimer(const ros::TimerEvent&) {
+  const ros::Time now = ros::Time::now();
+  const std::optional<PoseMeasurement> pose = lookupPose();
+  std::lock_guard<std::mutex> lock(mutex_);
+  publish(tracker_->update(now.toSec(), pose, wheels_), now);
+}
+
+void ControllerNodelet::publish(const TrackerOutput& out, const ros::Time& now) {
+  wheelchair_msgs::WheelTorques cmd;
+  cmd.header.stamp = now;
+  cmd.header.frame_id = base_frame_;
+  cmd.right = out.command.torque(0);
+  cmd.left = out.command.torque(1);
+  cmd.brake = out.command.brake;
+  torque_pub_.publish(cmd);
+
+  std::string status = toString(out.state);
+  if (!out.reason.empty()) status += ": " + out.reason;
+  if (status != last_status_) {
+    std_msgs::String s;
+    s.data = status;
+    status_pub_.publish(s);
+    last_status_ = status;
+    if (!out.reason.empty()) NODELET_WARN("controller: %s", status.c_str());
+  }
+  if (!out.reason.empty()) NODELET_WARN_THROTTLE(5.0, "controller: %s", status.c_str());
+  if (!out.has_reference) return;
+  geometry_msgs::PointStamped ref;
+  ref.header.stamp = now;
+  ref.header.frame_id = map_frame_;
+  ref.point.x = out.reference.position.x();
+  ref.point.y = out.reference.position.y();
+  reference_pub_.publish(ref);
+  geometry_msgs::Vector3Stamped err;
+  err.header = ref.header;
+  err.vector.x = out.reference.position.x() - out.y.x();
+  err.vector.y = out.reference.position.y() - out.y.y();
+  err.vector.z = out.body_deviation;  // axle centre's distance from the planned path
+  error_pub_.publish(err);
+}
+
+}  // namespace wheelchair_controller
+
+PLUGINLIB_EXPORT_CLASS(wheelchair_controller::ControllerNodelet, nodelet::Nodelet)
