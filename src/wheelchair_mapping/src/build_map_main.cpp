@@ -1,7 +1,9 @@
 // rosrun wheelchair_mapping build_map --log FILE --out map.yaml [options]
 // Builds an occupancy grid offline from a CARMEN log (FLASER / ROBOTLASER1 with their poses:
-// use the corrected logs for true poses), writes map.yaml + map.pgm and a PNG preview.
+// use the corrected logs for true poses) or a rosbag (LaserScan + tf), writes map.yaml +
+// map.pgm and a PNG preview.
 #include <sys/resource.h>
+#include <wheelchair_mapping/bag_scans.h>
 #include <wheelchair_mapping/bayes_mapper.h>
 #include <wheelchair_mapping/carmen_log.h>
 #include <wheelchair_mapping/map_consistency.h>
@@ -23,17 +25,20 @@ namespace {
 const char* kUsage =
     "usage: build_map --log FILE --out MAP.yaml [--resolution M] [--max-range M]\n"
     "                 [--no-echo-free M] [--hold-out N] [--preview FILE.png] [--quiet]\n"
-    "                 [--stats-json]\n"
+    "                 [--stats-json] [--scan-topic T] [--frame F]\n"
+    "  FILE              CARMEN log (plain or .gz) or rosbag (.bag)\n"
     "  --resolution M    cell size (default 0.05)\n"
     "  --max-range M     cells farther than this from the laser are not updated (default 20)\n"
     "  --no-echo-free M  treat no-echo beams as free space up to M metres (default: skip them)\n"
     "  --hold-out N      keep every Nth scan out of the map and report the fraction of its\n"
     "                    endpoints on occupied cells (map consistency)\n"
     "  --preview FILE    PNG preview (default: MAP.png next to MAP.yaml)\n"
-    "  --stats-json      print one JSON object with the figures on stdout\n";
+    "  --stats-json      print one JSON object with the figures on stdout\n"
+    "  --scan-topic T    rosbag: LaserScan topic (default /scan)\n"
+    "  --frame F         rosbag: fixed frame of the laser poses, from /tf (default odom)\n";
 
 struct Args {
-  std::string log, out, preview;
+  std::string log, out, preview, scan_topic = "/scan", frame = "odom";
   double resolution = 0.05, max_range = 20.0, no_echo_free = 0.0;
   int hold_out = 0;
   bool quiet = false, stats_json = false;
@@ -94,10 +99,10 @@ MapperConfig mapperConfig(const Args& a) {
   return c;
 }
 
-int run(const Args& a) {
+template <typename Reader>
+int build(Reader& reader, const Args& a) {
   const auto start = std::chrono::steady_clock::now();
   BayesMapper mapper(mapperConfig(a));
-  CarmenLogReader reader(a.log);
   ProgressBar bar(stderr, "build_map", !a.quiet);
   std::vector<LogScan> held_out;
   size_t read = 0, skipped = 0;
@@ -144,8 +149,8 @@ int run(const Args& a) {
   if (!a.quiet) {
     std::cerr << "build_map: " << a.out << " (" << map.width << " x " << map.height << " cells at "
               << a.resolution << " m) from " << mapper.scansInserted() << " scans; " << skipped
-              << " skipped, " << reader.corruptLines() << " corrupt lines; " << seconds
-              << " s, peak " << peak_mb << " MB; preview " << a.preview << "\n";
+              << " skipped, " << reader.problemCount() << " corrupt lines / scans without tf; "
+              << seconds << " s, peak " << peak_mb << " MB; preview " << a.preview << "\n";
     if (consistency.endpoints > 0) {
       std::cerr << "build_map: held-out scans: " << 100 * consistency.onFraction() << " % of "
                 << consistency.endpoints << " endpoints on occupied cells, "
@@ -154,7 +159,7 @@ int run(const Args& a) {
   }
   if (a.stats_json) {
     std::cout << "{\"scans\": " << mapper.scansInserted() << ", \"skipped\": " << skipped
-              << ", \"corrupt_lines\": " << reader.corruptLines() << ", \"seconds\": " << seconds
+              << ", \"corrupt_lines\": " << reader.problemCount() << ", \"seconds\": " << seconds
               << ", \"peak_rss_mb\": " << peak_mb << ", \"width\": " << map.width
               << ", \"height\": " << map.height
               << ", \"held_out_endpoints\": " << consistency.endpoints
@@ -162,6 +167,16 @@ int run(const Args& a) {
               << ", \"within_one_cell\": " << consistency.nearFraction() << "}\n";
   }
   return 0;
+}
+
+int run(const Args& a) {
+  const std::string ext = std::filesystem::path(a.log).extension().string();
+  if (ext == ".bag") {
+    BagScanReader reader(a.log, a.scan_topic, a.frame);
+    return build(reader, a);
+  }
+  CarmenLogReader reader(a.log);
+  return build(reader, a);
 }
 
 }  // namespace

@@ -7,8 +7,6 @@
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_srvs/Trigger.h>
-#include <tf2/LinearMath/Matrix3x3.h>
-#include <tf2/LinearMath/Quaternion.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 #include <wheelchair_mapping/bayes_mapper.h>
@@ -67,10 +65,7 @@ class MappingNodelet : public nodelet::Nodelet {
       reason = std::string("no tf ") + pose_frame_ + " -> " + msg.header.frame_id + ": " + e.what();
       return false;
     }
-    const auto& q = t.transform.rotation;
-    const tf2::Matrix3x3 r(tf2::Quaternion(q.x, q.y, q.z, q.w));
-    pose = {t.transform.translation.x, t.transform.translation.y, std::atan2(r[1][0], r[0][0])};
-    upside_down = r[2][2] < 0;  // laser mounted upside down: its angles turn the other way
+    upside_down = laserPose2D(t.transform, pose);
     return true;
   }
 
@@ -83,11 +78,7 @@ class MappingNodelet : public nodelet::Nodelet {
       return;
     }
     LaserScan2D scan = fromLaserScanMsg(*msg);
-    if (upside_down) {
-      scan.angle_min = -scan.angle_min;
-      scan.angle_max = -scan.angle_max;
-      scan.angle_increment = -scan.angle_increment;
-    }
+    if (upside_down) mirrorScanAngles(scan);
     std::lock_guard<std::mutex> lock(mutex_);
     const InsertResult r = mapper_->insert(scan, pose);
     if (!r.inserted) {

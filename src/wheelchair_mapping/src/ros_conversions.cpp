@@ -1,5 +1,8 @@
 #include <wheelchair_mapping/ros_conversions.h>
 
+#include <tf2/LinearMath/Matrix3x3.h>
+#include <tf2/LinearMath/Quaternion.h>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -57,6 +60,19 @@ LaserScan2D fromLaserScanMsg(const sensor_msgs::LaserScan& msg) {
   scan.range_max = msg.range_max;
   scan.ranges = msg.ranges;
   return scan;
+}
+
+bool laserPose2D(const geometry_msgs::Transform& transform, Pose2D& pose) {
+  const auto& q = transform.rotation;
+  const tf2::Matrix3x3 r(tf2::Quaternion(q.x, q.y, q.z, q.w));
+  pose = {transform.translation.x, transform.translation.y, std::atan2(r[1][0], r[0][0])};
+  return r[2][2] < 0;
+}
+
+void mirrorScanAngles(LaserScan2D& scan) {
+  scan.angle_min = -scan.angle_min;
+  scan.angle_max = -scan.angle_max;
+  scan.angle_increment = -scan.angle_increment;
 }
 
 }  // namespace wheelchair_mapping

@@ -46,6 +46,7 @@ class CarmenLogReader {
   /// "<file>:<line>: <problem>" for each corrupt line met during the last next() call.
   const std::string& problemsOfLastCall() const { return problems_; }
   size_t corruptLines() const { return corrupt_lines_; }
+  size_t problemCount() const { return corrupt_lines_; }
   /// Fraction of the (compressed) file read so far, 0..1.
   double progress() const;
 

@@ -7,7 +7,8 @@
 
 namespace wheelchair_mapping {
 
-/// Grey level 255 * P(free) per cell, black where P(occupied) > 0.5; throws std::runtime_error if the file cannot be written.
+/// Grey level 255 * P(free) per cell, black where P(occupied) > 0.5; throws std::runtime_error if
+/// the file cannot be written.
 void savePreviewPng(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& png_path);
 
 }  // namespace wheelchair_mapping
