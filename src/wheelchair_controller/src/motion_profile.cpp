@@ -55,7 +55,7 @@ JerkLimitedProfile::JerkLimitedProfile(double length, std::vector<double> speed_
     double j = j_want;
     if (!canBrake(integrateJerk(x, j_want, dt_, limits.accel))) {
       double lo = std::min(j_brake, j_want), hi = j_want;  // lo: the braking profile's own step
-      for (int i = 0; i < 12; ++i) {
+      for (int i = 0; i < 6; ++i) {
         const double mid = 0.5 * (lo + hi);
         (canBrake(integrateJerk(x, mid, dt_, limits.accel)) ? lo : hi) = mid;
       }

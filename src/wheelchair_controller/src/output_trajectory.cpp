@@ -86,8 +86,8 @@ PathOutputTrajectory::PathOutputTrajectory(std::shared_ptr<const SmoothPath> pat
   nominal.lateral_jerk *= margin;
   const double check = margin + 0.1;  // the nominal longitudinal limits stay below it
   std::vector<double> speed_limit = curvatureSpeedLimit(*path_, nominal);
-  constexpr int kIterations = 12;
-  constexpr double kSlowdown = 0.85, kSpread = 0.5;  // factor, [m] around a violation
+  constexpr int kIterations = 8;
+  constexpr double kSlowdown = 0.8, kSpread = 0.5;  // factor, [m] around a violation
   const double spacing = path_->length() / (speed_limit.size() - 1);
   for (int it = 0; it < kIterations; ++it) {
     profile_ = std::make_unique<JerkLimitedProfile>(path_->length(), speed_limit,
