@@ -9,7 +9,8 @@ renders rviz off-screen, and writes into --out:
   summary.txt               the paragraph printed at the end
 Exit 0 on success; otherwise non-zero and one line naming the step that failed and why.
 
-The demo is a list of steps (STEPS below); later stages (simulator, localizer, planner,
+The demo is a list of steps (STEPS below): the simulator drives the chair along a scripted
+torque profile in `flat`; later stages (localizer, planner,
 controller, driving to a place) are added as further steps.
 """
 import argparse
@@ -27,8 +28,11 @@ import rosgraph
 import rospy
 import tf2_ros
 import yaml
-from nav_msgs.msg import OccupancyGrid
+from nav_msgs.msg import OccupancyGrid, Odometry
+from sensor_msgs.msg import LaserScan
+from std_msgs.msg import Bool
 from tf2_msgs.msg import TFMessage
+from wheelchair_msgs.msg import WheelTorques
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 STARTUP_TIMEOUT = 20.0  # [s] for a node to show its first output
@@ -136,10 +140,59 @@ def start_master(demo):
     demo.start("rosmaster", ["rosmaster", "--core", "-p", str(port)])
     demo.wait_for(f"the ROS master at {uri}", rosgraph.is_master_online, ["rosmaster"])
     demo.rosrun("rosout", "rosout", "rosout", "__name:=rosout")
+    rospy.set_param("/use_sim_time", True)  # the simulator owns time (/clock)
     rospy.init_node("wheelchair_demo", disable_signals=True)
     demo.tf_buffer = tf2_ros.Buffer()
     demo.node = tf2_ros.TransformListener(demo.tf_buffer)
     return f"a ROS master at {uri} with rosout"
+
+
+def start_simulator(demo):
+    """The closed-loop simulator: the paper's model driven by wheel torques, the SICK laser on
+    the world's ground truth, wheel odometry, /clock at real-time speed."""
+    place = demo_pose(demo)
+    demo.facts["pose"] = place
+    world = ROOT / "test" / "worlds" / f"{demo.args.world}.yaml"
+    demo.rosrun("simulator", "wheelchair_sim", "simulator", f"_world:={world}", f"_initial_x:={place['x']}",
+                f"_initial_y:={place['y']}", f"_initial_yaw:={place['yaw']}", "_speed:=1.0",
+                "_publish_laser_tf:=false")
+    scans = []
+    subscriber = rospy.Subscriber("/scan", LaserScan, scans.append, queue_size=1)
+    scan = demo.wait_for("a laser scan on /scan", lambda: scans[-1] if scans else None, ["simulator"])
+    subscriber.unregister()
+    return (f"the simulator in {world.name} with a {len(scan.ranges)}-beam laser over "
+            f"{math.degrees(scan.angle_max - scan.angle_min):.0f} deg and /clock")
+
+
+def drive_torque_profile(demo):
+    """A scripted torque profile, as the controller would send it: accelerate, curve, brake."""
+    publisher = rospy.Publisher("/wheel_torques", WheelTorques, queue_size=1)
+    truths, collisions = [], []
+    subscribers = [rospy.Subscriber("/sim/ground_truth", Odometry, truths.append, queue_size=1),
+                   rospy.Subscriber("/sim/collision", Bool, collisions.append, queue_size=1)]
+    demo.wait_for("/sim/ground_truth", lambda: truths, ["simulator"])
+    start = truths[-1].pose.pose.position
+    # s, right, left [N m], brake: free ahead of living_centre up to x = 6 m (checked on the grid)
+    profile = [(2.0, 5.0, 5.0, False), (2.0, 5.0, 4.0, False), (2.0, 0.0, 0.0, True)]
+    for seconds, right, left, brake in profile:
+        end = time.monotonic() + seconds
+        while time.monotonic() < end:
+            demo.check_alive("simulator", dict(demo.processes)["simulator"])
+            message = WheelTorques(right=right, left=left, brake=brake)
+            message.header.stamp = rospy.Time.now()
+            publisher.publish(message)
+            time.sleep(0.02)
+    for subscriber in subscribers:
+        subscriber.unregister()
+    if any(c.data for c in collisions):
+        raise DemoError("the chair collided with the world during the torque profile")
+    end_pose = truths[-1].pose.pose.position
+    moved = math.hypot(end_pose.x - start.x, end_pose.y - start.y)
+    if moved < 0.2:
+        raise DemoError(f"the chair moved only {moved:.2f} m under the torque profile")
+    demo.facts["pose"] = dict(demo.facts["pose"], x=end_pose.x, y=end_pose.y)
+    return (f"a 6 s torque profile (accelerate, curve, brake) moved the chair {moved:.2f} m "
+            f"without collision")
 
 
 def start_map_server(demo):
@@ -173,7 +226,7 @@ def demo_pose(demo):
     places = ROOT / "test" / "worlds" / f"{demo.args.world}.places.yaml"
     listed = yaml.safe_load(places.read_text())["places"]
     for place in listed:
-        if place["name"] == demo.args.place or demo.args.place is None:
+        if place["name"] == demo.args.place:
             return place
     raise DemoError(f"no place named '{demo.args.place}' in {places} (there are: "
                     f"{', '.join(p['name'] for p in listed)})")
@@ -182,14 +235,16 @@ def demo_pose(demo):
 def place_chair(demo):
     """map -> odom -> base_link: stand-ins until the localizer and the base driver (or the
     simulator) publish them; left alone if something already does."""
-    place = demo_pose(demo)
+    place = demo.facts.get("pose") or demo_pose(demo)
     demo.facts["pose"] = place
     time.sleep(1.0)  # let tf arrive from anyone who already publishes it
     started = []
+    simulated_odometry = demo.lookup("odom", "base_link") is not None  # starts at the identity
     if demo.lookup("map", "odom") is None:
-        demo.rosrun("tf_map_odom", "tf2_ros", "static_transform_publisher", "0", "0", "0", "0", "0", "0",
+        at = [place["x"], place["y"], 0, place["yaw"]] if simulated_odometry else [0, 0, 0, 0]
+        demo.rosrun("tf_map_odom", "tf2_ros", "static_transform_publisher", *map(str, at), "0", "0",
                     "map", "odom", "__name:=tf_map_odom")
-        started.append("map->odom (identity)")
+        started.append("map->odom (the start pose)" if simulated_odometry else "map->odom (identity)")
     if demo.lookup("odom", "base_link") is None:
         demo.rosrun("tf_odom_base_link", "tf2_ros", "static_transform_publisher", str(place["x"]),
                     str(place["y"]), "0", str(place["yaw"]), "0", "0", "odom", "base_link",
@@ -291,9 +346,11 @@ def dump_tf_tree(demo):
 
 STEPS = [
     ("ROS master", start_master),
+    ("simulator", start_simulator),
     ("map server", start_map_server),
     ("chair description", start_description),
     ("chair pose", place_chair),
+    ("torque profile", drive_torque_profile),
     ("rviz snapshots", take_snapshots),
     ("tf tree", dump_tf_tree),
 ]
@@ -318,7 +375,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", required=True, help="output directory (emptied first)")
     parser.add_argument("--world", default="flat", help="world under test/worlds (default: flat)")
-    parser.add_argument("--place", help="named place where the chair stands (default: the world's first)")
+    parser.add_argument("--place", default="living_centre",
+                        help="named place where the chair starts (default: living_centre)")
     parser.add_argument("--snapshot-seconds", type=float, default=4.0, help="time rviz gets to fill its displays")
     args = parser.parse_args()
     if subprocess.run(["rospack", "find", "wheelchair_bringup"], capture_output=True).returncode != 0:
