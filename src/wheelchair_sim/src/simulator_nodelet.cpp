@@ -1,5 +1,8 @@
 // ROS face of the simulator: torques in, sensors and ground truth out, and it owns /clock.
+// Torques come from /wheel_torques, or (~motor_bus = "udp") from an emulated CAN motor
+// controller that the real base driver talks to; the driver then publishes the odometry.
 #include <wheelchair_sim/SetPose.h>
+#include <wheelchair_sim/motor_plant_adapter.h>
 #include <wheelchair_sim/simulated_chair.h>
 #include <wheelchair_sim/world_loader.h>
 
@@ -12,6 +15,8 @@
 #include <std_msgs/Bool.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <wheelchair_base_driver/emulated_motor_controller.h>
+#include <wheelchair_base_driver/udp_transport.h>
 #include <wheelchair_description/chair_params.h>
 #include <wheelchair_msgs/WheelTorques.h>
 #include <pluginlib/class_list_macros.hpp>
@@ -120,13 +125,22 @@ class SimulatorNodelet : public nodelet::Nodelet {
                     world_path.c_str());
       throw std::runtime_error("initial pose collides");
     }
+    const std::string motor_bus = pnh.param<std::string>("motor_bus", "");
+    if (motor_bus == "udp") {
+      startMotorController(pnh);
+    } else if (!motor_bus.empty()) {
+      NODELET_FATAL("unknown ~motor_bus '%s' (\"\" = /wheel_torques, \"udp\")", motor_bus.c_str());
+      throw std::runtime_error("unknown ~motor_bus");
+    }
 
     clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("clock", 10);
     scan_pub_ = nh.advertise<sensor_msgs::LaserScan>("scan", 5);
+    if (motor_controller_) publish_odometry_ = false;  // the base driver's, from our encoders
     if (publish_odometry_) odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
     truth_pub_ = nh.advertise<nav_msgs::Odometry>("sim/ground_truth", 10);
     collision_pub_ = nh.advertise<std_msgs::Bool>("sim/collision", 1, true);
-    torque_sub_ = nh.subscribe("wheel_torques", 10, &SimulatorNodelet::onTorques, this);
+    if (!motor_controller_)
+      torque_sub_ = nh.subscribe("wheel_torques", 10, &SimulatorNodelet::onTorques, this);
     teleport_srv_ = nh.advertiseService("sim/teleport", &SimulatorNodelet::onTeleport, this);
     reset_srv_ = nh.advertiseService("sim/reset", &SimulatorNodelet::onReset, this);
     tf_ = std::make_unique<tf2_ros::TransformBroadcaster>();
@@ -140,6 +154,25 @@ class SimulatorNodelet : public nodelet::Nodelet {
                  world_path.c_str(), speed_, step_);
     running_ = true;
     loop_ = std::thread(&SimulatorNodelet::run, this);
+  }
+
+  /// The motor side of the CAN bus on UDP (ports match base_driver's `_transport:=udp`).
+  void startMotorController(ros::NodeHandle& pnh) {
+    const int local = pnh.param("udp_local_port", 47111);
+    const int remote = pnh.param("udp_remote_port", 47110);
+    if (local < 0 || local > 65535 || remote < 0 || remote > 65535)
+      throw std::runtime_error("~udp_local_port / ~udp_remote_port out of range");
+    wheelchair_base_driver::EmulatedControllerConfig config;
+    config.counts_per_rev = pnh.param("counts_per_rev", config.counts_per_rev);
+    config.max_torque = chair_.max_wheel_torque;
+    motor_plant_ = std::make_unique<SimulatorMotorPlant>(chair_sim_->simulator());
+    // Frames are stamped in simulated time; only the simulation thread calls step().
+    motor_transport_ = std::make_unique<wheelchair_base_driver::UdpTransport>(
+        local, remote, [this] { return chair_sim_->simulator().time(); });
+    motor_controller_ = std::make_unique<wheelchair_base_driver::EmulatedMotorController>(
+        config, *motor_transport_, *motor_plant_);
+    NODELET_INFO("simulator: motor controller on %s, no /wheel_torques, no /odom",
+                 motor_transport_->describe().c_str());
   }
 
   void onTorques(const wheelchair_msgs::WheelTorques::ConstPtr& msg) {
@@ -195,7 +228,11 @@ class SimulatorNodelet : public nodelet::Nodelet {
     while (running_ && ros::ok()) {
       {
         std::lock_guard<std::mutex> lock(mutex_);
-        guardStaleTorques();
+        if (motor_controller_) {
+          motor_controller_->step(chair_sim_->simulator().time());  // its watchdogs brake
+        } else {
+          guardStaleTorques();
+        }
         const SensorOutputs out = chair_sim_->advance(step_);
         publish(out);
       }
@@ -234,6 +271,9 @@ class SimulatorNodelet : public nodelet::Nodelet {
   wheelchair_description::ChairParams chair_;
   SimParams params_;
   std::unique_ptr<SimulatedChair> chair_sim_;
+  std::unique_ptr<SimulatorMotorPlant> motor_plant_;
+  std::unique_ptr<wheelchair_base_driver::UdpTransport> motor_transport_;
+  std::unique_ptr<wheelchair_base_driver::EmulatedMotorController> motor_controller_;
   double speed_ = 1.0, step_ = 0.005, torque_timeout_ = 0.5;
   bool publish_odometry_ = true;
   double last_torque_time_ = -1e9;

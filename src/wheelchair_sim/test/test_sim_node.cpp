@@ -2,6 +2,8 @@
 // x in [-2, 8], y in [-3, 3]), chair starting at the origin facing +x, ideal dynamics.
 #include <wheelchair_sim/SetPose.h>
 
+#include "ros_wait.h"
+
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -20,16 +22,7 @@ namespace {
 
 constexpr double kFrontWall = 8.0;
 
-/// Spins until `done` or `wall_seconds` of wall time pass.
-bool waitFor(const std::function<bool()>& done, double wall_seconds) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(wall_seconds);
-  while (ros::ok() && ros::WallTime::now() < end) {
-    ros::spinOnce();
-    if (done()) return true;
-    ros::WallDuration(0.002).sleep();
-  }
-  return false;
-}
+using wheelchair_sim::test::waitFor;
 
 /// Keeps publishing the same torques (a controller at 50 Hz wall time) while alive.
 class TorquePublisher {
