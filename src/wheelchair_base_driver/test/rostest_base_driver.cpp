@@ -168,14 +168,17 @@ TEST_F(DriverNodeTest, TorquesReachTheMotorsWithScaleAndSign) {
     EXPECT_GT(p.leftRate(), 0.0);
     EXPECT_LT(p.rightRate(), 0.0);
   });
-  const WheelAngles wheels =
-      chair->with([](EmulatedMotorController&, SimpleWheelPlant& p) { return p.wheelAngles(); });
+  const auto [wheels, rates] = chair->with([](EmulatedMotorController&, SimpleWheelPlant& p) {
+    return std::make_pair(p.wheelAngles(), std::make_pair(p.leftRate(), p.rightRate()));
+  });
   std::lock_guard<std::mutex> lock(mutex);
   EXPECT_EQ(status.message, "driving");
   ASSERT_EQ(joints.position.size(), 2u);
-  // Odometry from the encoder frames follows the simulated wheels (0.1 rad: a few frames of lag).
-  EXPECT_NEAR(joints.position[0], wheels.left, 0.1);
-  EXPECT_NEAR(joints.position[1], wheels.right, 0.1);
+  // Odometry from the encoder frames follows the simulated wheels, up to three encoder frames
+  // (100 Hz) of lag at the wheels' speed, plus a count's worth.
+  const double lag = 3 * 0.01;
+  EXPECT_NEAR(joints.position[0], wheels.left, std::abs(rates.first) * lag + 0.01);
+  EXPECT_NEAR(joints.position[1], wheels.right, std::abs(rates.second) * lag + 0.01);
   EXPECT_LT(odom.twist.twist.angular.z, 0.0);  // left forward, right back: turning clockwise
   EXPECT_EQ(odom.header.frame_id, "odom");
   EXPECT_EQ(odom.child_frame_id, "base_link");
