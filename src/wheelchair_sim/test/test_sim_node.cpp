@@ -144,9 +144,10 @@ TEST_F(SimNode, ScansArriveWithTheSicksHeaderAndSeeTheFrontWall) {
   const auto chair =
       wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath());
   // Beam 180 looks straight ahead from the laser at x = laser_x to the wall at x = 8.
-  EXPECT_NEAR(s.ranges[180], kFrontWall - chair.laser_x, 0.06);
+  // Tolerance: 1 cm noise (3 sigma) + MRPT's ~4 cm range quantization.
+  EXPECT_NEAR(s.ranges[180], kFrontWall - chair.laser_x, 0.08);
   // Beam 0 looks right (-y) to the wall at y = -3.
-  EXPECT_NEAR(s.ranges[0], 3.0, 0.06);
+  EXPECT_NEAR(s.ranges[0], 3.0, 0.08);
 }
 
 TEST_F(SimNode, PushIntoAWallRaisesTheCollisionFlagAndStopsTheChair) {
@@ -192,11 +193,19 @@ TEST_F(SimNode, TeleportMovesTheTruthNotTheOdometryAndResetRestartsOdometry) {
   srv.request.x = -1.0;
   srv.request.y = 0.0;
   srv.request.yaw = 0.0;
+  TorquePublisher idle(nh_, 0.0, 0.0);  // no torque left over to move the chair after the reset
+  ros::WallDuration(0.2).sleep();
   ASSERT_TRUE(reset.call(srv));
   EXPECT_TRUE(srv.response.success);
-  ASSERT_TRUE(waitForFreshState());
-  EXPECT_NEAR(latest_.odom.pose.pose.position.x, 0.0, 1e-3);
-  EXPECT_NEAR(truth().pose.pose.position.x, -1.0, 1e-3);
+  // Messages stamped before the reset may still be queued: wait for the reset state itself.
+  EXPECT_TRUE(waitFor(
+      [this] {
+        return std::abs(latest_.odom.pose.pose.position.x) < 1e-3 &&
+               std::abs(truth().pose.pose.position.x + 1.0) < 1e-3;
+      },
+      10.0))
+      << "odometry x " << latest_.odom.pose.pose.position.x << ", truth x "
+      << truth().pose.pose.position.x;
 }
 
 }  // namespace
