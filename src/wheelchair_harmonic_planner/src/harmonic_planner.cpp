@@ -46,13 +46,7 @@ bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vec
   plan.clear();
   cert = Certificate();
   cert.planner = "HarmonicPlanner";
-  const auto finish = [&](bool ok) {
-    cert.success = ok;
-    cert.planning_time =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!ok) plan.clear();
-    return ok;
-  };
+  const auto finish = [&](bool ok) { return finishPlan(ok, t0, plan, cert); };
   int sx, sy, gx, gy;
   if (!checkEndpoints(cspace_.get(), start, goal, sx, sy, gx, gy, cert.failure_reason)) {
     return finish(false);

@@ -57,13 +57,7 @@ bool OmplPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vector<
   plan.clear();
   cert = Certificate();
   cert.planner = "OmplPlanner/" + planner_type_;
-  const auto finish = [&](bool ok) {
-    cert.success = ok;
-    cert.planning_time =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!ok) plan.clear();
-    return ok;
-  };
+  const auto finish = [&](bool ok) { return finishPlan(ok, t0, plan, cert); };
   int sx, sy, gx, gy;
   if (!checkEndpoints(cspace_.get(), start, goal, sx, sy, gx, gy, cert.failure_reason)) {
     return finish(false);

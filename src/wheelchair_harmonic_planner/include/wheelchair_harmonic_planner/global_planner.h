@@ -5,6 +5,7 @@
 #include <wheelchair_harmonic_planner/plan_types.h>
 #include <wheelchair_mapping/occupancy_map.h>
 
+#include <chrono>
 #include <map>
 #include <string>
 #include <vector>
@@ -38,5 +39,16 @@ class GlobalPlanner {
  protected:
   GlobalPlanner() = default;
 };
+
+/// Closes a makePlan call of any planner: records success and the time since `started`; a
+/// failed plan is left empty. Returns `ok`.
+inline bool finishPlan(bool ok, std::chrono::steady_clock::time_point started,
+                       std::vector<Pose2D>& plan, Certificate& cert) {
+  cert.success = ok;
+  cert.planning_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (!ok) plan.clear();
+  return ok;
+}
 
 }  // namespace wheelchair_harmonic_planner
