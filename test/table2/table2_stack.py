@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""The chair under test: the simulator (motors behind the CAN path over UDP) + the one-process
+chair (`rosrun wheelchair_bringup wheelchair CONFIG`), started together on free UDP ports.
+
+The bring-up file is wheelchair_bringup's config/chair_sim.yaml when it exists, else
+test/table2/chair_table2.yaml (or --config). A copy of it gets the base driver's
+transport/ports and use_sim_time; nothing else is changed. Ends both processes when either
+ends or on SIGINT/SIGTERM; exits with the first one's code.
+"""
+import argparse
+import os
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+
+import rospkg
+import yaml
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DRIVER_TYPE = "wheelchair_base_driver/BaseDriverNodelet"
+
+
+def free_udp_port():
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def default_config():
+    try:
+        theirs = os.path.join(rospkg.RosPack().get_path("wheelchair_bringup"), "config",
+                              "chair_sim.yaml")
+        if os.path.exists(theirs):
+            return theirs
+    except rospkg.ResourceNotFound:
+        pass
+    return os.path.join(HERE, "chair_table2.yaml")
+
+
+def chair_config(path, driver_port, sim_port):
+    """The bring-up file with the driver on UDP (driver_port -> sim_port) and sim time."""
+    with open(path) as f:
+        config = yaml.safe_load(f)
+    config.setdefault("params", {})
+    config["params"] = dict(config["params"] or {}, use_sim_time=True)
+    drivers = [n for n in config.get("nodelets", []) if n.get("type") == DRIVER_TYPE]
+    if len(drivers) != 1:
+        raise SystemExit("%s: expected one %s, found %d" % (path, DRIVER_TYPE, len(drivers)))
+    drivers[0]["params"] = dict(drivers[0].get("params") or {}, transport="udp",
+                                udp_local_port=driver_port, udp_remote_port=sim_port)
+    return config
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--config", default=None)
+    parser.add_argument("--world", default=os.path.join(HERE, "..", "worlds", "flat.yaml"))
+    parser.add_argument("--speed", type=float, default=2.0)
+    parser.add_argument("--initial", type=float, nargs=3, default=[2.2, 2.2, 0.0])
+    args, _ = parser.parse_known_args(
+        [a for a in sys.argv[1:] if not a.startswith("__")])  # roslaunch adds __name, __log
+    config_path = args.config or default_config()
+    driver_port, sim_port = free_udp_port(), free_udp_port()
+    while sim_port == driver_port:
+        sim_port = free_udp_port()
+    tmp = tempfile.NamedTemporaryFile("w", suffix=".yaml", prefix="table2_chair_", delete=False)
+    yaml.safe_dump(chair_config(config_path, driver_port, sim_port), tmp)
+    tmp.close()
+    print("table2_stack: chair %s, UDP driver %d <-> sim %d, speed %.1f" %
+          (config_path, driver_port, sim_port, args.speed), flush=True)
+    x, y, yaw = args.initial
+    sim = ["rosrun", "wheelchair_sim", "simulator", "__name:=simulator",
+           "_world:=" + os.path.abspath(args.world), "_motor_bus:=udp",
+           "_udp_local_port:=%d" % sim_port, "_udp_remote_port:=%d" % driver_port,
+           "_speed:=%g" % args.speed, "_initial_x:=%g" % x, "_initial_y:=%g" % y,
+           "_initial_yaw:=%g" % yaw]
+    chair = ["rosrun", "wheelchair_bringup", "wheelchair", tmp.name]
+    procs = [subprocess.Popen(sim, start_new_session=True)]
+    time.sleep(0.5)  # the simulator owns /clock: let it come up first
+    procs.append(subprocess.Popen(chair, start_new_session=True))
+
+    stopping = []
+
+    def stop(*_):
+        stopping.append(True)
+
+    signal.signal(signal.SIGINT, stop)
+    signal.signal(signal.SIGTERM, stop)
+    code = 0
+    while not stopping:
+        done = [p for p in procs if p.poll() is not None]
+        if done:
+            code = done[0].returncode
+            print("table2_stack: %s exited with %d" % (done[0].args[2], code), flush=True)
+            break
+        time.sleep(0.2)
+    for sig, grace in ((signal.SIGINT, 5.0), (signal.SIGTERM, 3.0), (signal.SIGKILL, 1.0)):
+        for p in procs:
+            if p.poll() is None:
+                os.killpg(p.pid, sig)
+        deadline = time.time() + grace
+        while time.time() < deadline and any(p.poll() is None for p in procs):
+            time.sleep(0.1)
+    os.unlink(tmp.name)
+    sys.exit(code)
+
+
+if __name__ == "__main__":
+    main()

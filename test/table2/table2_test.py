@@ -1,0 +1,92 @@
+#!/usr/bin/python3
+"""rostest node: the paper's Table 2 protocol on the simulated chair (table2.test).
+
+Runs the pairs of flat_pairs.yaml selected by ~pairs (1-based indices, default all), writes
+every run as JSON (~out, default next to the rostest's XML result, else $ROS_HOME), and checks:
+each goal reached (controller `goal_reached`, true final pose within 10 cm and 10 deg), no
+collision, and mean MSErc < 5.8 cm^2, mean MSEre < 11.2 cm^2 (the paper's Table 2 means).
+"""
+import json
+import math
+import os
+import sys
+import unittest
+
+import rospy
+import rostest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import table2_metrics as metrics  # noqa: E402
+import table2_protocol as protocol  # noqa: E402
+
+GOAL_POSITION_TOLERANCE = 0.10  # [m] the issue's 10 cm
+GOAL_HEADING_TOLERANCE = 10.0  # [deg]
+
+
+def results_path():
+    out = rospy.get_param("~out", "")
+    if out:
+        return out
+    for arg in sys.argv:
+        if arg.startswith("--gtest_output=xml:"):
+            return os.path.join(os.path.dirname(arg.split(":", 1)[1]), "table2_runs.json")
+    home = os.environ.get("ROS_HOME", os.path.expanduser("~/.ros"))
+    return os.path.join(home, "table2_runs.json")
+
+
+class Table2Protocol(unittest.TestCase):
+    records = None
+
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node("table2_test")
+        _, pairs = protocol.load_pairs()
+        chosen = rospy.get_param("~pairs", [])
+        if chosen:
+            pairs = [p for p in pairs if p["index"] in chosen]
+        runner = protocol.Table2Runner(rospy.get_param("~status_topic", "/controller/status"),
+                                       rospy.get_param("~wall_scale", 1.0))
+        runner.wait_ready()
+        cls.records = []
+        for pair in pairs:
+            try:
+                record = runner.run_pair(pair)
+            except RuntimeError as e:  # a run that could not finish is a failed run, not a crash
+                record = {"index": pair["index"], "name": pair["name"], "outcome": "error: %s" % e}
+            cls.records.append(record)
+            rospy.loginfo("table2 run %d %s: %s MSErc %.2f MSEre %.2f cm2, goal error %.1f cm "
+                          "%.1f deg, %.0f s wall", pair["index"], pair["name"],
+                          record.get("outcome"), record.get("mse_rc_cm2", math.nan),
+                          record.get("mse_re_cm2", math.nan),
+                          100 * record.get("goal_position_error_m", math.nan),
+                          record.get("goal_heading_error_deg", math.nan),
+                          record.get("wall_time_s", math.nan))
+        path = results_path()
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        finished = [r for r in cls.records if "mse_rc_cm2" in r]
+        with open(path, "w") as f:
+            json.dump({"runs": cls.records, "summary": protocol.summarize(finished)}, f)
+        rospy.loginfo("table2: runs written to %s", path)
+
+    def test_every_goal_reached_without_collision(self):
+        self.assertTrue(self.records, "no pair was run")
+        for r in self.records:
+            name = "run %d (%s)" % (r["index"], r["name"])
+            self.assertEqual(r["outcome"], "goal_reached", name)
+            self.assertFalse(r["collision"], name + ": collision")
+            self.assertLess(r["goal_position_error_m"], GOAL_POSITION_TOLERANCE, name)
+            self.assertLess(r["goal_heading_error_deg"], GOAL_HEADING_TOLERANCE, name)
+
+    def test_errors_beat_the_paper(self):
+        finished = [r for r in self.records if "mse_rc_cm2" in r]
+        self.assertEqual(len(finished), len(self.records), "some runs did not finish")
+        summary = protocol.summarize(finished)
+        paper = metrics.PAPER_TABLE2["mean"]
+        self.assertLess(summary["mse_rc_cm2"]["mean"], paper["mse_rc"],
+                        "mean MSErc (reference vs estimate) %s" % summary)
+        self.assertLess(summary["mse_re_cm2"]["mean"], paper["mse_re"],
+                        "mean MSEre (reference vs truth) %s" % summary)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("wheelchair_test", "table2_protocol", Table2Protocol)
