@@ -1,0 +1,248 @@
+#!/usr/bin/python3
+"""`./wheelchair report`: the paper's Table 2 protocol end to end, and Table 1, side by side
+with the paper (the workspace must be sourced).
+
+Starts its own ROS master on a free port, the simulator behind the CAN (UDP) path and the
+one-process chair (test/table2/table2_stack.py), drives the 10 pairs of
+test/table2/flat_pairs.yaml (test/table2/table2_protocol.py), and writes into --out:
+  report.md            the paper's Tables 1 and 2 beside ours, definitions, figures
+  runs.json            every run: plan, truth, estimate, MSErc, MSEre, goal errors, outcome
+  run_NN.png           per run, in the style of the paper's Figures 7 and 8 (matplotlib)
+  overview.png         every route on the map (the paper's Figure 5)
+  snapshots/run_NN.png rviz off-screen snapshot at the end of each run (plan, truth, estimate)
+  kld_bench.json       `bench/kld/run` (the KLD package's benchmark) for Table 1
+  logs/                one log per process
+Exit 0 when every run reached its goal and both means beat the paper, else 1.
+"""
+import argparse
+import json
+import math
+import os
+import pathlib
+import signal
+import socket
+import subprocess
+import sys
+import time
+
+import rosgraph
+import rospkg
+import rospy
+import yaml
+from geometry_msgs.msg import PoseStamped
+from nav_msgs.msg import Path
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+TABLE2 = ROOT / "test" / "table2"
+sys.path.insert(0, str(TABLE2))
+import table2_metrics as metrics  # noqa: E402
+import table2_protocol as protocol  # noqa: E402
+import table2_figures as figures  # noqa: E402
+
+TRUTH_TOPIC, ESTIMATE_TOPIC = "/table2/truth_path", "/table2/estimate_path"
+
+
+class Processes:
+    """The processes the report started (each in its own process group), stopped in reverse."""
+
+    def __init__(self, logs):
+        self.logs = logs
+        self.started = []
+
+    def start(self, name, command, env=None):
+        with open(self.logs / f"{name}.log", "wb") as log:
+            p = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT,
+                                 stdin=subprocess.DEVNULL, start_new_session=True, env=env)
+        self.started.append((name, p))
+        return p
+
+    def check(self):
+        for name, p in self.started:
+            if p.poll() is not None:
+                raise RuntimeError(f"{name} exited with {p.returncode} (log: logs/{name}.log)")
+
+    def stop_all(self):
+        for name, p in reversed(self.started):
+            for sig, grace in ((signal.SIGINT, 8.0), (signal.SIGTERM, 3.0), (signal.SIGKILL, 1.0)):
+                if p.poll() is not None:
+                    break
+                try:
+                    os.killpg(p.pid, sig)
+                except ProcessLookupError:
+                    break
+                try:
+                    p.wait(grace)
+                except subprocess.TimeoutExpired:
+                    pass
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def start_master(procs):
+    port = free_port()
+    os.environ["ROS_MASTER_URI"] = f"http://127.0.0.1:{port}"
+    procs.start("rosmaster", ["rosmaster", "--core", "-p", str(port)])
+    master = rosgraph.Master("/table2_report")
+    deadline = time.time() + 30
+    while not master.is_online():
+        procs.check()
+        if time.time() > deadline:
+            raise RuntimeError("rosmaster did not come up in 30 s")
+        time.sleep(0.2)
+    procs.start("rosout", ["rosrun", "rosout", "rosout"])
+    master.setParam("/use_sim_time", True)
+
+
+def rviz_config(out):
+    """wheelchair_bringup's rviz config plus the recorded truth (blue) and estimate (red)."""
+    source = pathlib.Path(rospkg.RosPack().get_path("wheelchair_bringup")) / "config" / "wheelchair.rviz"
+    config = yaml.safe_load(source.read_text())
+    displays = config["Visualization Manager"]["Displays"]
+    plan = next(d for d in displays if d.get("Class") == "rviz/Path")
+    for name, topic, color in (("Truth", TRUTH_TOPIC, "0; 90; 255"),
+                               ("Estimate", ESTIMATE_TOPIC, "230; 30; 30")):
+        displays.append(dict(plan, Name=name, Topic=topic, Color=color, **{"Line Width": 0.03}))
+    for d in displays:  # the particle cloud hides the trajectories at this scale
+        if d.get("Topic") == "/particlecloud":
+            d["Enabled"] = False
+    target = out / "table2.rviz"
+    target.write_text(yaml.safe_dump(config))
+    return target
+
+
+def path_message(samples):
+    msg = Path()
+    msg.header.frame_id = "map"
+    for s in samples:
+        p = PoseStamped()
+        p.header.frame_id = "map"
+        p.pose.position.x, p.pose.position.y = s[1], s[2]
+        p.pose.orientation.z, p.pose.orientation.w = math.sin(s[3] / 2), math.cos(s[3] / 2)
+        msg.poses.append(p)
+    return msg
+
+
+def snapshot(record, config, out, logs):
+    xs = [p[0] for p in record["plan"]] or [5.0]
+    ys = [p[1] for p in record["plan"]] or [6.0]
+    span = max(max(xs) - min(xs), max(ys) - min(ys), 2.0) + 1.5
+    view = f"{(min(xs) + max(xs)) / 2:.2f},{(min(ys) + max(ys)) / 2:.2f},{min(780 / span, 200):.0f}"
+    target = out / f"run_{record['index']:02d}.png"
+    result = subprocess.run(["rosrun", "wheelchair_bringup", "snapshot", "--out", str(target),
+                             "--config", str(config), "--view", view, "--size", "1000x800",
+                             "--log", str(logs / f"rviz_run_{record['index']:02d}.log")],
+                            capture_output=True, text=True, timeout=180)
+    if result.returncode != 0:
+        return "snapshot failed: " + (result.stdout + result.stderr).strip()[-200:]
+    return None
+
+
+def run_protocol(args, out, logs):
+    world, pairs = protocol.load_pairs()
+    if args.pairs:
+        pairs = [p for p in pairs if p["index"] in args.pairs]
+    procs = Processes(logs)
+    records = []
+    try:
+        start_master(procs)
+        x, y, yaw = pairs[0]["start"]
+        procs.start("chair_and_simulator",
+                    ["/usr/bin/python3", str(TABLE2 / "table2_stack.py"), "--speed",
+                     str(args.speed), "--initial", str(x), str(y), str(yaw)])
+        rospy.init_node("table2_report", disable_signals=True)
+        runner = protocol.Table2Runner(wall_scale=args.wall_scale)
+        runner.wait_ready()
+        truth_pub = rospy.Publisher(TRUTH_TOPIC, Path, queue_size=1, latch=True)
+        estimate_pub = rospy.Publisher(ESTIMATE_TOPIC, Path, queue_size=1, latch=True)
+        config = rviz_config(out) if args.snapshots else None
+        for pair in pairs:
+            procs.check()
+            try:
+                record = runner.run_pair(pair)
+            except RuntimeError as e:
+                record = {"index": pair["index"], "name": pair["name"], "via": pair["via"],
+                          "start": list(pair["start"]), "goal": list(pair["goal"]),
+                          "outcome": f"error: {e}"}
+            print(f"run {pair['index']:2d} {pair['name']:26s} {record['outcome']:14s} "
+                  f"MSErc {record.get('mse_rc_cm2', math.nan):6.2f}  "
+                  f"MSEre {record.get('mse_re_cm2', math.nan):6.2f} cm2  goal "
+                  f"{100 * record.get('goal_position_error_m', math.nan):5.1f} cm "
+                  f"{record.get('goal_heading_error_deg', math.nan):5.1f} deg", flush=True)
+            if config is not None and "truth" in record:
+                truth_pub.publish(path_message(record["truth"]))
+                estimate_pub.publish(path_message(record["estimate"]))
+                problem = snapshot(record, config, out / "snapshots", logs)
+                if problem:
+                    record["snapshot"] = problem
+                    print("  " + problem, flush=True)
+            records.append(record)
+    finally:
+        procs.stop_all()
+    return world, records
+
+
+def kld_bench(out, logs, timeout):
+    """bench/kld/run's JSON (the KLD package's own benchmark), or None with the reason."""
+    try:
+        result = subprocess.run([str(ROOT / "bench" / "kld" / "run")], cwd=ROOT,
+                                capture_output=True, text=True, timeout=timeout)
+    except (subprocess.TimeoutExpired, OSError) as e:
+        return None, f"bench/kld/run: {e}"
+    (logs / "kld_bench.log").write_text(result.stderr)
+    if result.returncode != 0:
+        return None, f"bench/kld/run exited with {result.returncode}"
+    try:
+        rows = json.loads(result.stdout)
+    except json.JSONDecodeError as e:
+        return None, f"bench/kld/run printed no JSON: {e}"
+    (out / "kld_bench.json").write_text(json.dumps(rows, indent=1))
+    return rows, None
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--out", default=str(ROOT / "out" / "report"))
+    parser.add_argument("--pairs", type=lambda s: [int(v) for v in s.split(",")], default=None,
+                        help="comma-separated 1-based pair indices (default: all 10)")
+    parser.add_argument("--speed", type=float, default=2.0, help="simulated / wall time")
+    parser.add_argument("--wall-scale", type=float, default=1.0,
+                        help="multiplies every wall-clock timeout (loaded machine)")
+    parser.add_argument("--no-snapshots", dest="snapshots", action="store_false")
+    parser.add_argument("--no-kld-bench", dest="kld_bench", action="store_false")
+    parser.add_argument("--kld-bench-timeout", type=float, default=900.0)
+    parser.add_argument("--from-json", help="redo tables and plots from a runs.json, no runs")
+    args = parser.parse_args()
+    out = pathlib.Path(args.out).resolve()
+    logs = out / "logs"
+    for d in (out, logs, out / "snapshots"):
+        d.mkdir(parents=True, exist_ok=True)
+    os.environ.setdefault("ROS_LOG_DIR", str(logs / "ros"))
+
+    if args.from_json:
+        data = json.loads(pathlib.Path(args.from_json).read_text())
+        world, records = data["world"], data["runs"]
+    else:
+        world, records = run_protocol(args, out, logs)
+        finished = [r for r in records if "mse_rc_cm2" in r]
+        (out / "runs.json").write_text(json.dumps(
+            {"world": world, "speed": args.speed, "runs": records,
+             "summary": protocol.summarize(finished)}))
+    bench_rows, bench_problem = (kld_bench(out, logs, args.kld_bench_timeout) if args.kld_bench
+                                 else (None, "not run (--no-kld-bench)"))
+    map_file = ROOT / "test" / "worlds" / world
+    figures.run_figures(records, map_file, out)
+    figures.overview_figure(records, map_file, out / "overview.png")
+    ok = figures.write_markdown(records, bench_rows, bench_problem, out / "report.md",
+                                speed=args.speed)
+    print((out / "report.md").read_text())
+    print(f"report written to {out}")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
