@@ -152,9 +152,11 @@ def run_protocol(args, out, logs):
         x, y, yaw = pairs[0]["start"]
         procs.start("chair_and_simulator",
                     ["/usr/bin/python3", str(TABLE2 / "table2_stack.py"), "--speed",
-                     str(args.speed), "--initial", str(x), str(y), str(yaw)])
+                     str(args.speed), "--initial", str(x), str(y), str(yaw)]
+                    + (["--config", args.chair_config] if args.chair_config else []))
         rospy.init_node("table2_report", disable_signals=True)
         runner = protocol.Table2Runner(wall_scale=args.wall_scale)
+        runner.check_processes = procs.check
         runner.wait_ready()
         truth_pub = rospy.Publisher(TRUTH_TOPIC, Path, queue_size=1, latch=True)
         estimate_pub = rospy.Publisher(ESTIMATE_TOPIC, Path, queue_size=1, latch=True)
@@ -212,6 +214,7 @@ def main():
     parser.add_argument("--speed", type=float, default=2.0, help="simulated / wall time")
     parser.add_argument("--wall-scale", type=float, default=1.0,
                         help="multiplies every wall-clock timeout (loaded machine)")
+    parser.add_argument("--chair-config", help="bring-up file (default: chair_sim.yaml)")
     parser.add_argument("--no-snapshots", dest="snapshots", action="store_false")
     parser.add_argument("--no-kld-bench", dest="kld_bench", action="store_false")
     parser.add_argument("--kld-bench-timeout", type=float, default=900.0)

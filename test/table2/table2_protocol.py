@@ -36,13 +36,31 @@ def load_pairs(path=os.path.join(HERE, "flat_pairs.yaml")):
         places = {p["name"]: (p["x"], p["y"], p["yaw"]) for p in yaml.safe_load(f)["places"]}
 
     def pose(end):
-        return tuple(places[end]) if isinstance(end, str) else tuple(float(v) for v in end)
+        if isinstance(end, str):
+            return tuple(places[end])
+        if isinstance(end, dict):  # a place's position with another heading
+            x, y, yaw = places[end["place"]]
+            return (x, y, float(end.get("yaw", yaw)))
+        return tuple(float(v) for v in end)
 
     pairs = []
     for i, p in enumerate(spec["pairs"]):
         pairs.append({"index": i + 1, "name": p["name"], "via": p.get("via", ""),
                       "start": pose(p["start"]), "goal": pose(p["goal"])})
     return spec["world"], pairs
+
+
+ACTIVE = ("aligning", "tracking", "rotating_to_goal")
+
+
+def terminal_statuses(status):
+    """The controller's (t, text) `goal_reached` / `aborted...` that follow its first active
+    state (aligning, tracking, rotating) since the goal: an abort still pending from the previous
+    pose (the teleport) is not this run's outcome."""
+    first_active = next((i for i, (_, s) in enumerate(status) if s.startswith(ACTIVE)), None)
+    if first_active is None:
+        return []
+    return [(t, s) for t, s in status[first_active:] if s.startswith(("goal_reached", "aborted"))]
 
 
 class Table2Runner:
@@ -64,8 +82,10 @@ class Table2Runner:
         rospy.Subscriber("/sim/collision", Bool, self._on_collision, queue_size=5)
         self.init_pub = rospy.Publisher("/initialpose", PoseWithCovarianceStamped, queue_size=1,
                                         latch=True)
+        self.plan_pub = rospy.Publisher("/plan", Path, queue_size=1)
         self.goal_pub = rospy.Publisher("/move_base_simple/goal", PoseStamped, queue_size=1)
         self.last_truth = None
+        self.check_processes = lambda: None  # raises when the chair or simulator died
 
     # -- callbacks --------------------------------------------------------------------------
     def _on_plan(self, msg):
@@ -104,6 +124,7 @@ class Table2Runner:
     def wait_for(self, what, predicate, wall_timeout):
         deadline = time.time() + wall_timeout * self.wall_scale
         while not rospy.is_shutdown() and time.time() < deadline:
+            self.check_processes()
             with self.lock:
                 if predicate():
                     return
@@ -174,8 +195,8 @@ class Table2Runner:
             t_end = rospy.Time.now().to_sec() + limit
 
             def finished():
-                return (any(s.startswith(("goal_reached", "aborted")) for _, s in self.status)
-                        or self.collided or rospy.Time.now().to_sec() > t_end)
+                return (bool(terminal_statuses(self.status)) or self.collided
+                        or rospy.Time.now().to_sec() > t_end)
 
             # wall: the simulated limit at a fifth of real time, at least
             self.wait_for("goal reached", finished, 5.0 * limit + 60.0)
@@ -186,15 +207,28 @@ class Table2Runner:
         with self.lock:
             status, truth, estimates = list(self.status), list(self.truth), list(self.estimates)
             collided = self.collided
-        record.update(self.evaluate(pair, plan, status, truth, estimates, t_goal))
+        if not terminal_statuses(status) or terminal_statuses(status)[0][1] != "goal_reached":
+            self.stop_chair()
+        record.update(self.evaluate(pair, plan, status, truth, estimates, t_goal, collided))
         record.update({"collision": collided, "path_length_m": length,
                        "wall_time_s": time.time() - wall0})
         return record
 
+    def stop_chair(self):
+        """After a failed run: an empty plan, which the controller answers with a controlled
+        stop (nav_msgs/Path convention of the planner host), so nothing moves at the next
+        teleport."""
+        empty = Path()
+        empty.header.frame_id = "map"
+        empty.header.stamp = rospy.Time.now()
+        self.plan_pub.publish(empty)
+        self.sim_sleep(2.0)
+
     @staticmethod
-    def evaluate(pair, plan, status, truth, estimates, t_goal):
-        ends = [t for t, s in status if s.startswith(("goal_reached", "aborted"))]
-        outcome = [s for _, s in status if s.startswith(("goal_reached", "aborted"))]
+    def evaluate(pair, plan, status, truth, estimates, t_goal, collided=False):
+        terminal = terminal_statuses(status)
+        ends = [t for t, _ in terminal]
+        outcome = [s for _, s in terminal]
         t_end = ends[0] if ends else (truth[-1][0] if truth else t_goal)
         tracking = [t for t, s in status if s.startswith("tracking")]
         t_start = tracking[0] if tracking else t_goal
@@ -204,7 +238,7 @@ class Table2Runner:
         final = truth[-1][1:4] if truth else (float("nan"),) * 3
         pos_err, yaw_err = metrics.goal_error(final, pair["goal"])
         return {
-            "outcome": outcome[0] if outcome else "timeout",
+            "outcome": outcome[0] if outcome else ("collision" if collided else "timeout"),
             "status_sequence": [s for _, s in status],
             "sim_duration_s": t_end - t_goal,
             "mse_rc_cm2": metrics.mse_cm2(est_w, path_xy) if est_w else float("nan"),

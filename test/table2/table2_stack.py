@@ -67,7 +67,8 @@ def main():
     while sim_port == driver_port:
         sim_port = free_udp_port()
     tmp = tempfile.NamedTemporaryFile("w", suffix=".yaml", prefix="table2_chair_", delete=False)
-    yaml.safe_dump(chair_config(config_path, driver_port, sim_port), tmp)
+    chair_config_data = chair_config(config_path, driver_port, sim_port)
+    yaml.safe_dump(chair_config_data, tmp)
     tmp.close()
     print("table2_stack: chair %s, UDP driver %d <-> sim %d, speed %.1f" %
           (config_path, driver_port, sim_port, args.speed), flush=True)
@@ -77,7 +78,11 @@ def main():
            "_udp_local_port:=%d" % sim_port, "_udp_remote_port:=%d" % driver_port,
            "_speed:=%g" % args.speed, "_initial_x:=%g" % x, "_initial_y:=%g" % y,
            "_initial_yaw:=%g" % yaw]
-    chair = ["rosrun", "wheelchair_bringup", "wheelchair", tmp.name]
+    # the manager's threads: a scan update may wait 100 ms for tf while the driver and the
+    # controller must keep running (chair_sim.yaml's num_worker_threads; 8 if it has none)
+    threads = int(chair_config_data.get("num_worker_threads", 8))
+    chair = ["rosrun", "wheelchair_bringup", "wheelchair", tmp.name,
+             "_num_worker_threads:=%d" % threads]
     procs = [subprocess.Popen(sim, start_new_session=True)]
     time.sleep(0.5)  # the simulator owns /clock: let it come up first
     procs.append(subprocess.Popen(chair, start_new_session=True))
