@@ -12,10 +12,9 @@ namespace wd = wheelchair_description;
 
 namespace {
 
-constexpr double kMinPathLength = 0.01;  // [m] shorter paths are "zero-length"
-constexpr double kNominalStep = 0.02;    // [s] assumed control period of the first step
-constexpr double kAtRestSpeed = 0.05;    // [m/s] below: may rotate in place before the path
-constexpr double kSettledSpeed = 0.01;   // [m/s] rim speed below which the goal may be declared
+constexpr double kNominalStep = 0.02;   // [s] assumed control period of the first step
+constexpr double kAtRestSpeed = 0.05;   // [m/s] below: may rotate in place before the path
+constexpr double kSettledSpeed = 0.01;  // [m/s] rim speed below which the goal may be declared
 
 std::string format(const char* fmt, double value) {
   char buf[128];
@@ -67,25 +66,67 @@ PathTracker::PathTracker(const ChairParams& chair, const TrackerConfig& config)
   wd::validate(chair_);
 }
 
+PreparedPath preparePath(const std::vector<Pose2>& path, const ChairParams& chair,
+                         const TrackerConfig& config, double initial_speed) {
+  PreparedPath out;
+  out.initial_speed = initial_speed;
+  out.rejection = pathRejectionReason(path, kMinPathLength);
+  if (!out.rejection.empty()) return out;
+  try {
+    auto smooth = std::make_shared<SmoothPath>(path);
+    out.trajectory = std::make_shared<PathOutputTrajectory>(smooth, chair.lookahead,
+                                                            chair.cm_offset, config.path_limits,
+                                                            config.limit_margin, initial_speed);
+    out.path = smooth;
+  } catch (const std::exception& e) {
+    out.rejection = std::string("path refused: ") + e.what();
+  }
+  return out;
+}
+
 std::string PathTracker::setPath(const std::vector<Pose2>& path) {
-  const std::string reason = pathRejectionReason(path, kMinPathLength);
-  if (!reason.empty()) {
+  return setPreparedPath(preparePath(path, chair_, config_, startSpeed()));
+}
+
+std::string PathTracker::setPreparedPath(const PreparedPath& prepared) {
+  const std::string held = holdReason();
+  if (!held.empty()) return "path ignored during " + held;
+  if (!prepared.rejection.empty() || !prepared.path || !prepared.trajectory) {
+    const std::string reason =
+        prepared.rejection.empty() ? "path not prepared" : prepared.rejection;
     abort(reason);
     return reason;
   }
-  path_ = std::make_shared<SmoothPath>(path);
+  path_ = prepared.path;
+  path_trajectory_ = prepared.trajectory;
   path_pending_ = true;
   return "";
+}
+
+double PathTracker::startSpeed() const {
+  if (!isActive(state_)) return 0.0;
+  const double speed = wd::bodyVelocity(last_state_.tail<2>(), chair_)(0);
+  return std::abs(speed) < kAtRestSpeed ? 0.0 : std::max(0.0, speed);
 }
 
 void PathTracker::abort(const std::string& reason) {
   beginStop(reason, last_state_.tail<2>(), TrackerState::kAborted);
 }
 
+void PathTracker::hold(const std::string& source, const std::string& reason) {
+  holds_[source] = reason;
+  abort(reason);
+}
+
+void PathTracker::release(const std::string& source) { holds_.erase(source); }
+
+std::string PathTracker::holdReason() const { return holds_.empty() ? "" : holds_.begin()->second; }
+
 void PathTracker::beginStop(const std::string& reason, const Eigen::Vector2d& eta,
                             TrackerState end_state) {
   phases_.clear();
   path_pending_ = false;
+  ++stop_count_;
   if (state_ == TrackerState::kStopping) return;  // keep the first reason
   reason_ = reason;
   stop_end_state_ = end_state;
@@ -141,18 +182,15 @@ void PathTracker::startPhases(const State& x) {
   const bool at_rest = std::abs(speed) < kAtRestSpeed;
   if (at_rest && std::abs(std::remainder(start.heading - p.z(), 2.0 * M_PI)) >
                      config_.start_heading_tolerance) {
-    phases_.push_back({std::make_unique<RotationOutputTrajectory>(p.head<2>(), p.z(), start.heading,
+    phases_.push_back({std::make_shared<RotationOutputTrajectory>(p.head<2>(), p.z(), start.heading,
                                                                   l, config_.rotation_limits),
                        TrackerState::kAligning});
   }
-  phases_.push_back({std::make_unique<PathOutputTrajectory>(
-                         path_, l, chair_.cm_offset, config_.path_limits, config_.limit_margin,
-                         at_rest ? 0.0 : std::max(0.0, speed)),
-                     TrackerState::kTracking});
+  phases_.push_back({path_trajectory_, TrackerState::kTracking});
   goal_heading_ = path_->goalHeading();
   if (std::abs(std::remainder(goal_heading_ - end.heading, 2.0 * M_PI)) >
       config_.goal_heading_tolerance) {
-    phases_.push_back({std::make_unique<RotationOutputTrajectory>(
+    phases_.push_back({std::make_shared<RotationOutputTrajectory>(
                            end.position, end.heading, goal_heading_, l, config_.rotation_limits),
                        TrackerState::kRotatingToGoal});
   } else {

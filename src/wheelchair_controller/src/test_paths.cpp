@@ -86,6 +86,37 @@ std::vector<NamedPath> homeTestPaths() {
   return paths;
 }
 
+std::vector<NamedPath> flatTestPaths() {
+  const double q = M_PI / 2.0;
+  std::vector<NamedPath> paths;
+  const auto add = [&paths](const char* name, const PathBuilder& b) {
+    paths.push_back({name, b.poses()});
+  };
+  add("living_to_hallway", PathBuilder({2.8, 4.5, 0.0}).straight(1.5).arc(0.8, q).straight(3.0));
+  add("hallway_to_living", PathBuilder({5.1, 8.5, -q}).straight(3.3).arc(0.8, -q).straight(1.5));
+  add("living_to_kitchen", PathBuilder({3.0, 4.9, 0.0}).straight(4.5).arc(1.0, -q).straight(1.5));
+  add("kitchen_to_living", PathBuilder({8.4, 2.3, q}).straight(1.6).arc(1.0, q).straight(4.0));
+  add("around_table", PathBuilder({2.9, 2.0, 0.0})
+                          .straight(1.4)
+                          .arc(0.9, q)
+                          .straight(1.1)
+                          .arc(0.9, q)
+                          .straight(1.5)
+                          .arc(0.9, q)
+                          .straight(0.5));
+  add("s_curve", PathBuilder({2.9, 1.85, 0.0}).arc(1.5, 0.6).arc(1.5, -0.6).straight(0.5));
+  add("around_island", PathBuilder({8.6, 1.8, q}).straight(2.2).arc(1.025, M_PI).straight(2.0));
+  add("living_loop", PathBuilder({2.8, 2.2, q})
+                         .straight(2.1)
+                         .arc(0.8, -q)
+                         .straight(1.0)
+                         .arc(0.9, -q)
+                         .straight(1.0));
+  add("tv_to_centre", PathBuilder({2.0, 4.6, -q}).arc(1.0, 1.0).arc(1.0, -1.0).straight(0.3));
+  add("to_tv", PathBuilder({2.95, 3.0, q}).arc(1.0, 1.0).arc(1.0, -1.0).straight(0.2));
+  return paths;
+}
+
 std::vector<Pose2> cosinePath(double amplitude, double wavelength, double length, double spacing) {
   std::vector<Pose2> p;
   const double k = 2.0 * M_PI / wavelength;

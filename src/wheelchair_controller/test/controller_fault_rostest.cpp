@@ -1,11 +1,14 @@
 // rostest: the controller nodelet tracks a path (tf map->base_link and /odom fed here), then
-// gets a fault (~fault: nan_path | stale_pose) and must command zero torque + brake and
-// report "aborted: <reason>" on ~status.
+// gets a fault (~fault: nan_path | stale_pose | pose_jump | zero_length_path | safety_stop |
+// user_stop | localization_lost) and must command zero torque + brake and report
+// "aborted: <reason>" on ~status; after the stop, it resumes only as specified.
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
+#include <std_msgs/Bool.h>
+#include <std_msgs/Empty.h>
 #include <std_msgs/String.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_msgs/WheelTorques.h>
@@ -13,18 +16,20 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <string>
 
 namespace {
 
-nav_msgs::Path straightPath(double nan_at = -1.0) {
+/// 3 m straight ahead; a NaN at index nan_at; spacing 0: every pose at the origin.
+nav_msgs::Path straightPath(int nan_at = -1, double spacing = 0.05) {
   nav_msgs::Path path;
   path.header.frame_id = "map";
   path.header.stamp = ros::Time::now();
   for (int i = 0; i <= 60; ++i) {
     geometry_msgs::PoseStamped p;
     p.header = path.header;
-    p.pose.position.x = (i == nan_at) ? NAN : 0.05 * i;
+    p.pose.position.x = (i == nan_at) ? NAN : spacing * i;
     p.pose.orientation.w = 1.0;
     path.poses.push_back(p);
   }
@@ -42,9 +47,20 @@ bool waitFor(const std::function<bool()>& condition, double timeout) {
 
 }  // namespace
 
+/// What each fault must produce on ~status after "aborted: ".
+const std::map<std::string, std::string> kExpectedReason = {
+    {"nan_path", "non-finite"},
+    {"stale_pose", "stale pose"},
+    {"pose_jump", "pose jump"},
+    {"zero_length_path", "zero-length"},
+    {"safety_stop", "safety stop"},
+    {"user_stop", "user stop"},
+    {"localization_lost", "localization lost: test"}};
+
 TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
   ros::NodeHandle nh, pnh("~");
   const std::string fault = pnh.param<std::string>("fault", "nan_path");
+  ASSERT_EQ(kExpectedReason.count(fault), 1u) << "unknown fault " << fault;
   wheelchair_msgs::WheelTorques last;
   std::atomic<int> count{0};
   std::string status;
@@ -57,9 +73,13 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
       "controller/status", 10, [&](const std_msgs::String::ConstPtr& m) { status = m->data; });
   ros::Publisher path_pub = nh.advertise<nav_msgs::Path>("plan", 1, true);
   ros::Publisher odom_pub = nh.advertise<nav_msgs::Odometry>("odom", 10);
+  ros::Publisher safety_pub = nh.advertise<std_msgs::Bool>("safety/stop", 1, true);
+  ros::Publisher user_stop_pub = nh.advertise<std_msgs::Empty>("user_stop", 1);
+  ros::Publisher localized_pub = nh.advertise<std_msgs::String>("kld/localized", 1, true);
   tf2_ros::TransformBroadcaster tf;
   std::atomic<bool> publish_pose{true};
-  // The chair stands still at the origin: tf and /odom at 50 Hz.
+  std::atomic<double> pose_x{0.0};
+  // The chair stands still at the origin (or pose_x): tf and /odom at 50 Hz.
   ros::Timer feed = nh.createTimer(ros::Duration(0.02), [&](const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
     if (publish_pose) {
@@ -67,6 +87,7 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
       t.header.stamp = now;
       t.header.frame_id = "map";
       t.child_frame_id = "base_link";
+      t.transform.translation.x = pose_x;
       t.transform.rotation.w = 1.0;
       tf.sendTransform(t);
     }
@@ -77,28 +98,62 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
   });
   ros::AsyncSpinner spinner(2);
   spinner.start();
+  const auto tracking = [&] { return !last.brake && std::abs(last.left) > 1e-3; };
+  const auto stopped = [&] { return last.brake && last.left == 0.0 && last.right == 0.0; };
 
   ASSERT_TRUE(waitFor([&] { return count > 10; }, 20.0)) << "no /wheel_torques";
   EXPECT_TRUE(last.brake) << "idle controller holds the brake";
   path_pub.publish(straightPath());
-  ASSERT_TRUE(waitFor([&] { return !last.brake && std::abs(last.left) > 1e-3; }, 5.0))
+  ASSERT_TRUE(waitFor(tracking, 10.0))
       << "the controller does not start tracking; status: " << status;
 
   if (fault == "nan_path") {
     path_pub.publish(straightPath(30));
-  } else {
+  } else if (fault == "stale_pose") {
     publish_pose = false;
+  } else if (fault == "pose_jump") {
+    pose_x = 1.0;
+  } else if (fault == "zero_length_path") {
+    path_pub.publish(straightPath(-1, 0.0));
+  } else if (fault == "safety_stop") {
+    std_msgs::Bool stop;
+    stop.data = true;
+    safety_pub.publish(stop);
+  } else if (fault == "user_stop") {
+    user_stop_pub.publish(std_msgs::Empty());
+  } else if (fault == "localization_lost") {
+    std_msgs::String s;
+    s.data = "test";
+    localized_pub.publish(s);
   }
-  EXPECT_TRUE(waitFor([&] { return last.brake && last.left == 0.0 && last.right == 0.0; }, 6.0))
-      << "status: " << status;
+  EXPECT_TRUE(waitFor(stopped, 6.0)) << "status: " << status;
   EXPECT_TRUE(waitFor([&] { return status.rfind("aborted", 0) == 0; }, 1.0)) << status;
-  const std::string expected = fault == "nan_path" ? "non-finite" : "stale pose";
-  EXPECT_NE(status.find(expected), std::string::npos) << status;
+  EXPECT_NE(status.find(kExpectedReason.at(fault)), std::string::npos) << status;
   // It stays stopped.
   ros::WallDuration(0.5).sleep();
-  EXPECT_TRUE(last.brake);
-  EXPECT_EQ(last.left, 0.0);
-  EXPECT_EQ(last.right, 0.0);
+  EXPECT_TRUE(stopped()) << status;
+
+  // Resuming: a held stop (supervisor, localization) ignores paths until it is cleared; every
+  // other stop resumes on the next valid path.
+  pose_x = 0.0;
+  publish_pose = true;
+  const bool held = fault == "safety_stop" || fault == "localization_lost";
+  if (held) {
+    path_pub.publish(straightPath());
+    ros::WallDuration(1.0).sleep();
+    EXPECT_TRUE(stopped()) << "a path during a held stop must not resume; status: " << status;
+    std_msgs::Bool clear;
+    clear.data = false;
+    safety_pub.publish(clear);
+    std_msgs::String localized;
+    localized.data = "localized";
+    localized_pub.publish(localized);
+    ros::WallDuration(1.0).sleep();
+    EXPECT_TRUE(stopped()) << "clearing alone must not resume; status: " << status;
+  }
+  path_pub.publish(straightPath());
+  EXPECT_TRUE(waitFor(tracking, 10.0))
+      << "a new path after the stop must resume; status: " << status;
 }
 
 int main(int argc, char** argv) {

@@ -140,3 +140,58 @@ TEST(Faults, IdleTrackerHoldsTheBrake) {
   EXPECT_EQ(out.command.torque, Eigen::Vector2d::Zero());
   EXPECT_EQ(out.state, wc::TrackerState::kIdle);
 }
+
+TEST(Faults, SafetyHoldStopsAndRefusesPathsUntilReleased) {
+  bool refused = false;
+  expectControlledStop(
+      run([&](wc::PathTracker& tr, double t, const wc::PoseMeasurement& truth) {
+        if (std::abs(t - 4.0) < 1e-9) tr.hold("safety", "safety stop (supervisor)");
+        if (std::abs(t - 4.5) < 1e-9) {
+          refused = !tr.setPath(wc::PathBuilder(truth.pose).straight(2.0).poses()).empty();
+        }
+        return std::optional<wc::PoseMeasurement>(truth);
+      }),
+      "safety stop");
+  EXPECT_TRUE(refused) << "a path during the hold must be refused";
+}
+
+TEST(Faults, UserStopStops) {
+  expectControlledStop(run([](wc::PathTracker& tr, double t, const wc::PoseMeasurement& truth) {
+                         if (std::abs(t - 4.0) < 1e-9) tr.abort("user stop");
+                         return std::optional<wc::PoseMeasurement>(truth);
+                       }),
+                       "user stop");
+}
+
+TEST(Faults, ReleasedHoldResumesOnlyWithANewPath) {
+  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  wc::PathTracker tracker(p, wc::TrackerConfig{});
+  const std::vector<wc::Pose2> path = wc::PathBuilder({0.0, 0.0, 0.0}).straight(2.0).poses();
+  const wc::PoseMeasurement pose{0.0, {0, 0, 0}};
+  tracker.hold("localization", "localization lost: test");
+  EXPECT_FALSE(tracker.setPath(path).empty());
+  double t = 0.0;
+  for (; t < 1.0; t += 0.02) tracker.update(t, wc::PoseMeasurement{t, pose.pose}, {t, {0, 0}});
+  EXPECT_EQ(tracker.state(), wc::TrackerState::kAborted);
+  tracker.release("localization");
+  const wc::TrackerOutput still = tracker.update(t, wc::PoseMeasurement{t, pose.pose}, {t, {0, 0}});
+  EXPECT_TRUE(still.command.brake) << "releasing alone does not resume";
+  EXPECT_TRUE(tracker.setPath(path).empty());
+  const wc::TrackerOutput resumed =
+      tracker.update(t + 0.02, wc::PoseMeasurement{t + 0.02, pose.pose}, {t + 0.02, {0, 0}});
+  EXPECT_EQ(resumed.state, wc::TrackerState::kTracking);
+  EXPECT_FALSE(resumed.command.brake);
+}
+
+TEST(Faults, PathPreparedElsewhereIsSwappedInByTheNextStep) {
+  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  wc::PathTracker tracker(p, wc::TrackerConfig{});
+  const wc::PreparedPath prepared = wc::preparePath(
+      wc::PathBuilder({0.0, 0.0, 0.0}).straight(2.0).poses(), p, tracker.config(), 0.0);
+  ASSERT_TRUE(prepared.rejection.empty()) << prepared.rejection;
+  EXPECT_TRUE(tracker.setPreparedPath(prepared).empty());
+  const wc::TrackerOutput out =
+      tracker.update(0.0, wc::PoseMeasurement{0.0, {0, 0, 0}}, {0.0, {0.0, 0.0}});
+  EXPECT_EQ(out.state, wc::TrackerState::kTracking);
+  EXPECT_NEAR(out.reference.position.x(), p.lookahead, 1e-3) << "P_l reference starts at P + L";
+}

@@ -8,6 +8,8 @@
 #include <wheelchair_controller/linearization.h>
 #include <wheelchair_controller/output_trajectory.h>
 
+#include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,6 +75,21 @@ struct TrackerOutput {
   double reference_rate = 1.0;  ///< governor's time rate (1: on schedule)
 };
 
+constexpr double kMinPathLength = 0.01;  ///< [m] shorter paths are "zero-length"
+
+/// A path made ready for tracking: the smoothed path and its time-parametrized reference.
+/// Building it is the expensive part (up to ~1 s of CPU on a long curvy path), so the nodelet
+/// does it off the control thread and swaps the result in (PathTracker::setPreparedPath).
+struct PreparedPath {
+  std::string rejection;  ///< non-empty: the path is refused, and why
+  std::shared_ptr<const SmoothPath> path;
+  std::shared_ptr<const OutputTrajectory> trajectory;
+  double initial_speed = 0.0;  ///< [m/s] forward speed the reference starts with
+};
+/// Smooths the path and builds its reference for a chair moving at initial_speed (m/s).
+PreparedPath preparePath(const std::vector<Pose2>& path, const ChairParams& chair,
+                         const TrackerConfig& config, double initial_speed);
+
 class PathTracker {
  public:
   PathTracker(const ChairParams& chair, const TrackerConfig& config);
@@ -80,8 +97,20 @@ class PathTracker {
   /// New path (base_link poses in map), replacing the current one. A rejected path
   /// (empty, non-finite, zero-length) starts a controlled stop; the reason is returned.
   std::string setPath(const std::vector<Pose2>& path);
+  /// As setPath with a path prepared elsewhere (preparePath). Refused while a hold is active.
+  std::string setPreparedPath(const PreparedPath& prepared);
+  /// Forward speed [m/s] a path given now should start with (0 when not moving along a path).
+  double startSpeed() const;
   /// Stops (controlled) with the given reason.
   void abort(const std::string& reason);
+  /// A stop that lasts: e.g. the safety supervisor's stop or a lost localization. Stops now
+  /// (controlled) and refuses paths until every hold is released; then a new path resumes.
+  void hold(const std::string& source, const std::string& reason);
+  void release(const std::string& source);
+  /// Reason of the first active hold (empty: none).
+  std::string holdReason() const;
+  /// Counts the stops begun: a path prepared before a stop must not undo it.
+  uint64_t stopCount() const { return stop_count_; }
   /// One control step at time `now` [s]: latest pose (nullopt: none, e.g. lost
   /// localization) and wheel speeds from odometry.
   TrackerOutput update(double now, const std::optional<PoseMeasurement>& pose,
@@ -113,9 +142,12 @@ class PathTracker {
   std::string reason_;
 
   std::shared_ptr<const SmoothPath> path_;
+  std::shared_ptr<const OutputTrajectory> path_trajectory_;
   bool path_pending_ = false;
+  std::map<std::string, std::string> holds_;  ///< source -> reason
+  uint64_t stop_count_ = 0;
   struct Phase {
-    std::unique_ptr<OutputTrajectory> trajectory;
+    std::shared_ptr<const OutputTrajectory> trajectory;
     TrackerState state;
   };
   std::vector<Phase> phases_;  ///< remaining phases, current first

@@ -33,6 +33,14 @@ struct NamedPath {
 /// Ten paths of a home-like scale (hallway, doorway turns, S-curves, around a table, ...).
 std::vector<NamedPath> homeTestPaths();
 
+/// Ten paths in the `flat` world (test/worlds/flat.yaml, map frame) between its rooms, through
+/// its 90 cm doorways (living room - hallway, living room - kitchen), around the dining table
+/// and the kitchen island. Drawn for the chair's footprint (1.10 m x 0.62 m, axle 0.30 m behind
+/// the front): every pose keeps >= 3 cm from the walls (checked on the map). The 80 cm doors
+/// open off the 1.2 m hallway, where a 90-degree turn of this footprint sweeps 1.14 m behind
+/// the axle: no path enters them.
+std::vector<NamedPath> flatTestPaths();
+
 /// Figure 6: y = amplitude cos(2 pi x / wavelength), x in [0, length]; the chair starts at the
 /// origin heading +x, i.e. `amplitude` to the side of the path's start.
 std::vector<Pose2> cosinePath(double amplitude = 0.3, double wavelength = 4.0, double length = 8.0,

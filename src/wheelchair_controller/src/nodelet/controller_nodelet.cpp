@@ -3,7 +3,6 @@
 
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/Vector3Stamped.h>
-#include <std_msgs/String.h>
 #include <tf2/utils.h>
 #include <wheelchair_msgs/WheelTorques.h>
 #include <pluginlib/class_list_macros.hpp>
@@ -22,6 +21,15 @@ double yawOf(const geometry_msgs::Quaternion& q) {
 }
 
 }  // namespace
+
+ControllerNodelet::~ControllerNodelet() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    shutdown_ = true;
+  }
+  request_cv_.notify_all();
+  if (worker_.joinable()) worker_.join();
+}
 
 void ControllerNodelet::onInit() {
   ros::NodeHandle& nh = getNodeHandle();
@@ -50,7 +58,11 @@ void ControllerNodelet::onInit() {
   reference_pub_ = pnh.advertise<geometry_msgs::PointStamped>("reference", 10);
   error_pub_ = pnh.advertise<geometry_msgs::Vector3Stamped>("tracking_error", 10);
   status_pub_ = pnh.advertise<std_msgs::String>("status", 10, true);
+  worker_ = std::thread(&ControllerNodelet::buildReferences, this);
   path_sub_ = nh.subscribe("plan", 1, &ControllerNodelet::onPath, this);
+  safety_sub_ = nh.subscribe("safety/stop", 1, &ControllerNodelet::onSafetyStop, this);
+  user_stop_sub_ = nh.subscribe("user_stop", 5, &ControllerNodelet::onUserStop, this);
+  localized_sub_ = nh.subscribe("kld/localized", 5, &ControllerNodelet::onLocalized, this);
   odom_sub_ = nh.subscribe("odom", 10, &ControllerNodelet::onOdometry, this);
   timer_ = nh.createTimer(ros::Duration(1.0 / rate), &ControllerNodelet::onTimer, this);
 }
@@ -60,13 +72,66 @@ void ControllerNodelet::onPath(const nav_msgs::Path::ConstPtr& msg) {
   for (const auto& p : msg->poses)
     poses.emplace_back(p.pose.position.x, p.pose.position.y, yawOf(p.pose.orientation));
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!msg->header.frame_id.empty() && msg->header.frame_id != map_frame_) {
-    tracker_->abort("path in frame '" + msg->header.frame_id + "', expected '" + map_frame_ + "'");
+  ++path_sequence_;  // a newer path supersedes one still being built
+  std::string rejection = tracker_->holdReason();
+  if (!rejection.empty()) {
+    rejection = "path ignored during " + rejection;
+  } else if (!msg->header.frame_id.empty() && msg->header.frame_id != map_frame_) {
+    rejection = "path in frame '" + msg->header.frame_id + "', expected '" + map_frame_ + "'";
+    tracker_->abort(rejection);
   } else {
-    tracker_->setPath(poses);
+    // Cheap checks now (a NaN or empty path stops at once), the reference on the worker.
+    rejection = pathRejectionReason(poses, kMinPathLength);
+    if (!rejection.empty()) {
+      tracker_->abort(rejection);
+    } else {
+      request_ = PathRequest{std::move(poses), tracker_->startSpeed(), path_sequence_,
+                             tracker_->stopCount()};
+      request_cv_.notify_one();
+    }
   }
-  if (!tracker_->reason().empty())
-    NODELET_WARN("controller: path rejected: %s", tracker_->reason().c_str());
+  if (!rejection.empty()) NODELET_WARN("controller: path rejected: %s", rejection.c_str());
+}
+
+void ControllerNodelet::buildReferences() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (true) {
+    request_cv_.wait(lock, [this] { return shutdown_ || request_.has_value(); });
+    if (shutdown_) return;
+    const PathRequest request = std::move(*request_);
+    request_.reset();
+    lock.unlock();
+    const PreparedPath prepared =
+        preparePath(request.poses, chair_, tracker_->config(), request.initial_speed);
+    lock.lock();
+    // Swap in only if no newer path came and no stop began meanwhile.
+    if (request.sequence != path_sequence_ || request.stop_count != tracker_->stopCount()) continue;
+    const std::string rejection = tracker_->setPreparedPath(prepared);
+    if (!rejection.empty()) NODELET_WARN("controller: path rejected: %s", rejection.c_str());
+  }
+}
+
+void ControllerNodelet::onSafetyStop(const std_msgs::Bool::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (msg->data) {
+    tracker_->hold("safety", "safety stop (supervisor)");
+  } else {
+    tracker_->release("safety");
+  }
+}
+
+void ControllerNodelet::onUserStop(const std_msgs::Empty::ConstPtr&) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  tracker_->abort("user stop");
+}
+
+void ControllerNodelet::onLocalized(const std_msgs::String::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (msg->data == "localized") {
+    tracker_->release("localization");
+  } else {
+    tracker_->hold("localization", "localization lost: " + msg->data);
+  }
 }
 
 void ControllerNodelet::onOdometry(const nav_msgs::Odometry::ConstPtr& msg) {
