@@ -13,6 +13,10 @@ namespace wheelchair_kld {
 
 using mrpt::math::TPose2D;
 
+namespace {
+constexpr double kGoldenRatioFraction = 0.6180339887498949;  // (sqrt(5) - 1) / 2
+}  // namespace
+
 KldLocalizer::KldLocalizer(std::shared_ptr<const LocalizationMap> map, const KldParams& params,
                            uint64_t seed)
     : map_(std::move(map)), params_(params), measurement_(*map_, params_.measurement) {
@@ -22,6 +26,24 @@ KldLocalizer::KldLocalizer(std::shared_ptr<const LocalizationMap> map, const Kld
 void KldLocalizer::resetRecovery() {
   w_slow_ = w_fast_ = 0;
   pending_first_update_ = true;
+  fit_window_.clear();
+}
+
+double KldLocalizer::meanFit() const {
+  if (fit_window_.empty()) return 1.0;
+  double sum = 0;
+  for (double f : fit_window_) sum += f;
+  return sum / fit_window_.size();
+}
+
+void KldLocalizer::checkFit() {
+  fit_window_.push_back(inliers_);
+  const size_t window = static_cast<size_t>(std::max(1, params_.fit_window));
+  while (fit_window_.size() > window) fit_window_.pop_front();
+  if (fit_window_.size() == window && meanFit() < params_.fit_min_mean) {
+    ++relocalizations_;
+    initGlobal();
+  }
 }
 
 void KldLocalizer::initGlobal() {
@@ -32,6 +54,7 @@ void KldLocalizer::initGlobal() {
     p.log_w = -std::log(static_cast<double>(n));
   }
   resetRecovery();
+  pending_refine_ = true;
   normalizeAndEstimate();
 }
 
@@ -49,6 +72,7 @@ void KldLocalizer::initGaussian(const TPose2D& mean, const mrpt::math::CMatrixDo
     p.log_w = -std::log(static_cast<double>(n));
   }
   resetRecovery();
+  pending_refine_ = false;
   normalizeAndEstimate();
 }
 
@@ -68,10 +92,14 @@ UpdateResult KldLocalizer::update(const TPose2D& odom, const LaserScan& scan, bo
     return UpdateResult::kNoMotion;
   measurement_.setScan(scan);
   sampleStep(from, odom);
+  if (pending_refine_) refineAtFirstScan(measurement_);
+  pending_refine_ = false;
   last_odom_ = odom;
   pending_first_update_ = false;
   normalizeAndEstimate();
+  keepPlausibleHypotheses();
   inliers_ = measurement_.inlierFraction(estimate_.mean, params_.inlier_tolerance);
+  checkFit();
   return UpdateResult::kUpdated;
 }
 
@@ -94,6 +122,7 @@ void KldLocalizer::sampleStep(const TPose2D& odom_from, const TPose2D& odom_to) 
   std::vector<Particle> next;
   next.reserve(std::min<size_t>(m_max, 4 * particles_.size() + m_min));
   double m_x = 0, w_sum = 0, log_max = -1e300;
+  double stratum = rng_.drawUniform(0.0, 1.0);
   int drawn = 0;
   // Algorithm 1 main loop, run until M >= max(M_x, M_min) (bounded by M_max).
   for (int m = 0; m < m_max && (m < m_min || m < m_x); ++m) {
@@ -102,10 +131,13 @@ void KldLocalizer::sampleStep(const TPose2D& odom_from, const TPose2D& odom_to) 
     if (random) {
       p.d = map_->sampleFreePose(rng_);
     } else {
-      const double r = rng_.drawUniform(0.0, acc);
-      const size_t i = std::min<size_t>(
-          std::upper_bound(cumulative.begin(), cumulative.end(), r) - cumulative.begin(),
-          particles_.size() - 1);
+      // Ancestor by a golden-ratio (Weyl) sequence from a random start: every prefix of the
+      // draws is stratified over the cumulative weights, so equally likely modes (a symmetric
+      // world) keep their shares instead of drifting apart under multinomial noise, whatever
+      // count M the KLD bound stops at.
+      stratum = stratum + kGoldenRatioFraction;
+      stratum -= std::floor(stratum);
+      const size_t i = drawAncestor(cumulative, stratum * acc);
       p.d = sampleMotionModel(u, particles_[i].d, params_.motion, rng_);  // line 7
     }
     p.log_w = measurement_.logLikelihood(p.d);  // line 8
@@ -130,6 +162,36 @@ void KldLocalizer::sampleStep(const TPose2D& odom_from, const TPose2D& odom_to) 
       w_slow_ += params_.alpha_slow * (w_avg - w_slow_);
       w_fast_ += params_.alpha_fast * (w_avg - w_fast_);
     }
+  }
+}
+
+size_t KldLocalizer::drawAncestor(const std::vector<double>& cumulative, double r) const {
+  return std::min<size_t>(
+      std::upper_bound(cumulative.begin(), cumulative.end(), r) - cumulative.begin(),
+      cumulative.size() - 1);
+}
+
+void KldLocalizer::refineAtFirstScan(const MeasurementModel& model) {
+  double sxy = params_.refine_xy, sth = params_.refine_theta;
+  for (int step = 0; step < params_.refine_steps; ++step, sxy *= 0.5, sth *= 0.5) {
+    std::vector<double> cumulative(particles_.size());
+    double acc = 0;
+    for (size_t i = 0; i < particles_.size(); ++i)
+      cumulative[i] = acc += std::exp(particles_[i].log_w);
+    std::vector<Particle> next(particles_.size());
+    double stratum = rng_.drawUniform(0.0, 1.0), log_max = -1e300;
+    for (auto& p : next) {
+      stratum += kGoldenRatioFraction;
+      stratum -= std::floor(stratum);
+      const TPose2D& a = particles_[drawAncestor(cumulative, stratum * acc)].d;
+      p.d = TPose2D(a.x + rng_.drawGaussian1D(0, sxy), a.y + rng_.drawGaussian1D(0, sxy),
+                    mrpt::math::wrapToPi(a.phi + rng_.drawGaussian1D(0, sth)));
+      p.log_w = model.logLikelihood(p.d);
+      log_max = std::max(log_max, p.log_w);
+    }
+    for (auto& p : next) p.log_w -= log_max;
+    particles_.swap(next);
+    temperWeights();
   }
 }
 
@@ -165,6 +227,27 @@ void KldLocalizer::normalizeAndEstimate() {
   estimate_ = estimateDominantCluster(particles_, params_.cluster_xy, params_.cluster_theta);
 }
 
+void KldLocalizer::keepPlausibleHypotheses() {
+  const PoseEstimate& e = estimate_;
+  if (e.cluster_count < 2) return;
+  std::vector<double> log_scale(e.cluster_weights.size(), 0.0);
+  bool changed = false;
+  for (size_t c = 0; c < e.cluster_weights.size(); ++c) {
+    const double w = e.cluster_weights[c];
+    if (static_cast<int>(c) == e.best_cluster || w < 0.01 || w >= params_.hypothesis_min_weight)
+      continue;
+    const TPose2D mean = clusterMean(particles_, e, static_cast<int>(c));
+    if (measurement_.inlierFraction(mean, params_.inlier_tolerance) < params_.fit_min_mean)
+      continue;
+    log_scale[c] = std::log(params_.hypothesis_min_weight / w);
+    changed = true;
+  }
+  if (!changed) return;
+  for (size_t i = 0; i < particles_.size(); ++i)
+    particles_[i].log_w += log_scale[e.particle_cluster[i]];
+  normalizeAndEstimate();
+}
+
 LocalizationStatus KldLocalizer::status() const {
   LocalizationStatus s;
   std::ostringstream why;
@@ -177,15 +260,17 @@ LocalizationStatus KldLocalizer::status() const {
   if (pending_first_update_) {
     why << "waiting for the first scan after initialization";
   } else if (estimate_.cluster_weight < params_.localized_min_cluster_weight) {
-    why << estimate_.cluster_count << " pose hypotheses (best holds "
+    why << "ambiguous: " << estimate_.cluster_count << " pose hypotheses (best holds "
         << static_cast<int>(100 * estimate_.cluster_weight) << " % of the weight)";
   } else if (sxy > params_.localized_max_xy_std) {
     why << "position uncertainty too large (sigma " << sxy << " m)";
   } else if (sth > params_.localized_max_theta_std) {
     why << "heading uncertainty too large (sigma " << sth * 180 / M_PI << " deg)";
-  } else if (inliers_ < params_.localized_min_inliers) {
+  } else if (inliers_ < params_.localized_min_inliers || meanFit() < params_.fit_min_mean) {
     why << "scan does not fit the map at the estimate (" << static_cast<int>(100 * inliers_)
-        << " % of the echoes within " << params_.inlier_tolerance << " m of an obstacle)";
+        << " % of the echoes within " << params_.inlier_tolerance << " m of an obstacle, "
+        << static_cast<int>(100 * meanFit()) << " % over the last " << fit_window_.size()
+        << " updates)";
   } else if (w_slow_ > 0 && w_fast_ < params_.recovery_ratio * w_slow_) {
     why << "scans no longer match the map (short/long-term likelihood " << w_fast_ / w_slow_ << ")";
   }

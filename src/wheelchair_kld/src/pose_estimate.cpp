@@ -55,23 +55,47 @@ PoseEstimate estimateDominantCluster(const std::vector<Particle>& particles, dou
     }
     ++clusters;
   }
-  std::vector<double> weight(clusters, 0.0);
+  est.cluster_weights.assign(clusters, 0.0);
+  est.particle_cluster.resize(particles.size());
   double total = 0;
   for (size_t i = 0; i < particles.size(); ++i) {
     const double w = std::exp(particles[i].log_w);
-    weight[cluster_of[keys[i]]] += w;
+    est.particle_cluster[i] = cluster_of[keys[i]];
+    est.cluster_weights[est.particle_cluster[i]] += w;
     total += w;
   }
+  if (!(total > 0)) return est;
   int best = 0;
   for (int c = 0; c < clusters; ++c) {
-    if (weight[c] > weight[best]) best = c;
-    if (weight[c] >= 0.01 * total) ++est.cluster_count;
+    est.cluster_weights[c] /= total;
+    if (est.cluster_weights[c] > est.cluster_weights[best]) best = c;
+    if (est.cluster_weights[c] >= 0.01) ++est.cluster_count;
   }
-  est.cluster_weight = total > 0 ? weight[best] / total : 0;
-  // Weighted mean (circular for the heading) and covariance of the dominant cluster.
+  est.best_cluster = best;
+  est.cluster_weight = est.cluster_weights[best];
+  // Weighted mean and covariance of the dominant cluster.
+  est.mean = clusterMean(particles, est, best);
+  double sw = 0;
+  est.cov.setZero();
+  for (size_t i = 0; i < particles.size(); ++i) {
+    if (est.particle_cluster[i] != best) continue;
+    const double w = std::exp(particles[i].log_w);
+    const auto& p = particles[i].d;
+    const double e[3] = {p.x - est.mean.x, p.y - est.mean.y,
+                         mrpt::math::wrapToPi(p.phi - est.mean.phi)};
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) est.cov(r, c) += w * e[r] * e[c];
+    sw += w;
+  }
+  if (sw > 0) est.cov *= 1.0 / sw;
+  return est;
+}
+
+mrpt::math::TPose2D clusterMean(const std::vector<Particle>& particles, const PoseEstimate& est,
+                                int c) {
   double sx = 0, sy = 0, sc = 0, ss = 0, sw = 0;
   for (size_t i = 0; i < particles.size(); ++i) {
-    if (cluster_of[keys[i]] != best) continue;
+    if (est.particle_cluster[i] != c) continue;
     const double w = std::exp(particles[i].log_w);
     const auto& p = particles[i].d;
     sx += w * p.x;
@@ -80,19 +104,8 @@ PoseEstimate estimateDominantCluster(const std::vector<Particle>& particles, dou
     ss += w * std::sin(p.phi);
     sw += w;
   }
-  if (!(sw > 0)) return est;
-  est.mean = mrpt::math::TPose2D(sx / sw, sy / sw, std::atan2(ss, sc));
-  est.cov.setZero();
-  for (size_t i = 0; i < particles.size(); ++i) {
-    if (cluster_of[keys[i]] != best) continue;
-    const double w = std::exp(particles[i].log_w) / sw;
-    const auto& p = particles[i].d;
-    const double e[3] = {p.x - est.mean.x, p.y - est.mean.y,
-                         mrpt::math::wrapToPi(p.phi - est.mean.phi)};
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) est.cov(r, c) += w * e[r] * e[c];
-  }
-  return est;
+  if (!(sw > 0)) return mrpt::math::TPose2D();
+  return mrpt::math::TPose2D(sx / sw, sy / sw, std::atan2(ss, sc));
 }
 
 }  // namespace wheelchair_kld

@@ -12,6 +12,7 @@
 #include <wheelchair_kld/pose_estimate.h>
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -48,6 +49,10 @@ class KldLocalizer {
   double wFast() const { return w_fast_; }
   /// Share of the last scan's echoes that fit the map at the estimate.
   double inlierFraction() const { return inliers_; }
+  /// Mean inlier share over the last fit_window updates (1 before the first update).
+  double meanFit() const;
+  /// Global re-localizations triggered by a persistent misfit so far.
+  int relocalizations() const { return relocalizations_; }
   const KldParams& params() const { return params_; }
   const LocalizationMap& map() const { return *map_; }
 
@@ -55,11 +60,19 @@ class KldLocalizer {
   /// The sampling loop of Algorithm 1: draws, predicts, weighs until M >= max(M_x, M_min)
   /// (bounded by M_max), or exactly fixed_particles in fixed-size mode.
   void sampleStep(const mrpt::math::TPose2D& odom_from, const mrpt::math::TPose2D& odom_to);
+  /// Re-applies the current scan with kernel-jittered redraws (refine_steps, after initGlobal).
+  void refineAtFirstScan(const MeasurementModel& model);
+  /// Index of the particle whose cumulative weight interval holds `r` in [0, total).
+  size_t drawAncestor(const std::vector<double>& cumulative, double r) const;
   /// Raises the weights to the power that keeps min_effective_fraction of them effective.
   void temperWeights();
   /// Normalizes weights (Algorithm 1, lines 20-23) and updates the cluster estimate.
   void normalizeAndEstimate();
   void resetRecovery();
+  /// Floors the share of clusters that fit the scan as well as a correct pose does.
+  void keepPlausibleHypotheses();
+  /// Records the fit of this update; starts a global re-localization on a persistent misfit.
+  void checkFit();
 
   std::shared_ptr<const LocalizationMap> map_;
   KldParams params_;
@@ -69,10 +82,13 @@ class KldLocalizer {
   PoseEstimate estimate_;
   std::optional<mrpt::math::TPose2D> last_odom_;
   bool pending_first_update_ = false;
+  bool pending_refine_ = false;  ///< the next update is the first after initGlobal
   int expected_beams_ = 0;
   double w_slow_ = 0, w_fast_ = 0;
   double inliers_ = 0;  ///< inlier fraction of the last scan at the estimate
   std::string last_rejection_;
+  std::deque<double> fit_window_;  ///< inlier shares of the last fit_window updates
+  int relocalizations_ = 0;
 };
 
 }  // namespace wheelchair_kld

@@ -54,6 +54,15 @@ struct KldParams {
   /// competing hypotheses of a global localization or a symmetric world alive).
   double min_effective_fraction = 0.01;
 
+  /// After a global initialization the first scan is applied refine_steps more times: the set
+  /// is redrawn from its weights with a Gaussian kernel of refine_xy / refine_theta (halved at
+  /// every step) and re-weighed. The sparse uniform particles that landed near a likelihood peak
+  /// then populate it, so every plausible hypothesis (the true pose, a mirror image) is kept
+  /// with its fair share instead of whichever peak happened to get the luckiest sample.
+  int refine_steps = 3;
+  double refine_xy = 0.2;      ///< [m]
+  double refine_theta = 0.05;  ///< [rad]
+
   // Update gating: filter only after this much travel since the last update.
   double update_min_d = 0.05;  ///< [m]
   double update_min_a = 0.05;  ///< [rad]
@@ -70,9 +79,20 @@ struct KldParams {
   double localized_max_xy_std = 0.25;       ///< [m]
   double localized_max_theta_std = 0.1745;  ///< [rad]
   double localized_min_cluster_weight = 0.9;
+  /// A second cluster (>= 1 % of the weight) whose mean fits the scan as well as a correct pose
+  /// does (inlier share >= fit_min_mean) is a genuine alternative (a symmetric world): its share
+  /// is kept at least this high, so resampling noise cannot decide between equally good
+  /// hypotheses and the status stays "ambiguous" until a scan tells them apart.
+  double hypothesis_min_weight = 0.15;
   /// Share of the echoes that must end within inlier_tolerance of an obstacle at the estimate.
   double localized_min_inliers = 0.7;
   double inlier_tolerance = 0.15;  ///< [m]
+  /// Global re-localization (a fresh uniform set) when the mean inlier share of the last
+  /// fit_window updates falls below fit_min_mean: the filter settled on a pose that does not
+  /// explain the scans (a wrong office after global localization, or a kidnapping the
+  /// short/long-term averages did not catch). A correct track stays above 0.9 here.
+  int fit_window = 10;
+  double fit_min_mean = 0.85;
 
   MotionNoise motion;
   MeasurementParams measurement;

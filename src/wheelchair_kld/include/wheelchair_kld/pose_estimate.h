@@ -20,7 +20,15 @@ struct PoseEstimate {
   mrpt::math::CMatrixDouble33 cov;  ///< (x, y, theta) covariance of the dominant cluster
   double cluster_weight = 0;        ///< share of the total weight in the dominant cluster
   int cluster_count = 0;            ///< clusters holding >= 1 % of the weight
+  /// Cluster of every particle (index into cluster_weights).
+  std::vector<int> particle_cluster;
+  std::vector<double> cluster_weights;  ///< share of the total weight of every cluster
+  int best_cluster = -1;
 };
+
+/// Weighted mean (circular for the heading) of the particles of cluster `c`.
+mrpt::math::TPose2D clusterMean(const std::vector<Particle>& particles, const PoseEstimate& est,
+                                int c);
 
 /// Groups particles into connected cells of size (cell_xy, cell_xy, cell_theta) (heading wraps)
 /// and returns the weighted mean / covariance of the heaviest group.
