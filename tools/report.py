@@ -106,8 +106,8 @@ def rviz_config(out):
     for name, topic, color in (("Truth", TRUTH_TOPIC, "0; 90; 255"),
                                ("Estimate", ESTIMATE_TOPIC, "230; 30; 30")):
         displays.append(dict(plan, Name=name, Topic=topic, Color=color, **{"Line Width": 0.03}))
-    for d in displays:  # the particle cloud hides the trajectories at this scale
-        if d.get("Topic") == "/particlecloud":
+    for d in displays:  # particles hide the trajectories; a trajectory of all runs clutters
+        if d.get("Topic") == "/particlecloud" or d.get("Name", "").startswith("Trajectory"):
             d["Enabled"] = False
     target = out / "table2.rviz"
     target.write_text(yaml.safe_dump(config))

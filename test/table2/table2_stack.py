@@ -59,7 +59,7 @@ def main():
     parser.add_argument("--config", default=None)
     parser.add_argument("--world", default=os.path.join(HERE, "..", "worlds", "flat.yaml"))
     parser.add_argument("--speed", type=float, default=2.0)
-    parser.add_argument("--initial", type=float, nargs=3, default=[2.2, 2.2, 0.0])
+    parser.add_argument("--initial", type=float, nargs=3, default=[3.0, 2.2, 0.0])
     args, _ = parser.parse_known_args(
         [a for a in sys.argv[1:] if not a.startswith("__")])  # roslaunch adds __name, __log
     config_path = args.config or default_config()
