@@ -130,10 +130,11 @@ def snapshot(record, config, out, logs):
     xs = [p[0] for p in record["plan"]] or [5.0]
     ys = [p[1] for p in record["plan"]] or [6.0]
     span = max(max(xs) - min(xs), max(ys) - min(ys), 2.0) + 1.5
-    view = f"{(min(xs) + max(xs)) / 2:.2f},{(min(ys) + max(ys)) / 2:.2f},{min(780 / span, 200):.0f}"
+    # the 3D view is about 620 x 700 px of the 1000 x 800 window (the displays panel takes the rest)
+    view = f"{(min(xs) + max(xs)) / 2:.2f},{(min(ys) + max(ys)) / 2:.2f},{min(600 / span, 200):.0f}"
     target = out / f"run_{record['index']:02d}.png"
     result = subprocess.run(["rosrun", "wheelchair_bringup", "snapshot", "--out", str(target),
-                             "--config", str(config), "--view", view, "--size", "1000x800",
+                             "--config", str(config), "--view", view, "--size", "1000x800", "--seconds", "8",
                              "--log", str(logs / f"rviz_run_{record['index']:02d}.log")],
                             capture_output=True, text=True, timeout=180)
     if result.returncode != 0:
