@@ -1,4 +1,5 @@
 #include <wheelchair_controller/path_tracker.h>
+#include <wheelchair_controller/start_offset.h>
 #include <wheelchair_controller/torque_saturation.h>
 
 #include <Eigen/LU>
@@ -225,12 +226,19 @@ OutputReference PathTracker::governedReference(double dt, double error) {
   return out;
 }
 
+void PathTracker::startFromHere(const State& x) {
+  Phase& phase = phases_.front();
+  phase.trajectory =
+      startingFrom(phase.trajectory, outputPoint(x.head<5>(), chair_), config_.start_offset_limits);
+}
+
 bool PathTracker::advancePhase(double dt, const State& x, double error) {
   if (phase_time_ < phases_.front().trajectory->duration()) return true;
   if (phases_.size() > 1) {
     phases_.erase(phases_.begin());
     state_ = phases_.front().state;
     phase_time_ = 0.0;
+    startFromHere(x);
     return true;
   }
   const double heading_error = std::remainder(x(wd::kTheta) - goal_heading_, 2.0 * M_PI);
@@ -293,6 +301,7 @@ TrackerOutput PathTracker::update(double now, const std::optional<PoseMeasuremen
   if (resume) {
     if (state_ == TrackerState::kStopping) state_ = TrackerState::kIdle;
     startPhases(x);
+    startFromHere(x);
     path_pending_ = false;
   }
   const Vector5 q = x.head<5>();

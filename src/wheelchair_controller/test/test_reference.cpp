@@ -1,12 +1,17 @@
 // Reference generation: jerk-limited profile, smooth path, off-tracking-free output reference.
 #include <wheelchair_controller/output_trajectory.h>
+#include <wheelchair_controller/start_offset.h>
 #include <wheelchair_controller/test_paths.h>
+#include <wheelchair_description/chair_params.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace wc = wheelchair_controller;
+namespace wd = wheelchair_description;
 
 TEST(MotionProfile, RespectsLimitsAndEndsAtRestAtTheEnd) {
   const wc::MotionLimits lim{0.8, 0.5, 1.0};
@@ -85,4 +90,36 @@ TEST(OutputTrajectory, InPlaceRotationIsBoundedAndKeepsTheAxle) {
     EXPECT_LE(r.velocity.norm(), 0.15 * 0.6 * 1.005);
   }
   EXPECT_NEAR(rot.heading(rot.duration()), M_PI / 2, 2e-3);
+}
+
+TEST(StartOffset, StartsAtTheChairAndDecaysSmoothlyToTheBase) {
+  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  auto base = std::make_shared<wc::PathOutputTrajectory>(
+      std::make_shared<wc::SmoothPath>(wc::PathBuilder({0.0, 0.0, 0.0}).straight(4.0).poses()),
+      p.lookahead, p.cm_offset, wc::PathLimits{}, 0.7);
+  const Eigen::Vector2d y(p.lookahead, 0.3);  // Figure 6: 0.3 m beside the path's start
+  const wc::MotionLimits limits{0.0, 0.1, 0.2};
+  const auto start = wc::startingFrom(base, y, limits);
+  const auto* decay = dynamic_cast<const wc::OffsetDecayTrajectory*>(start.get());
+  ASSERT_NE(decay, nullptr);
+  const double T = decay->decayTime();
+  // sqrt(10/sqrt(3) * 0.3 / 0.1) = 4.16 s, cbrt(60 * 0.3 / 0.2) = 4.48 s: the jerk decides.
+  EXPECT_NEAR(T, std::cbrt(60.0 * 0.3 / 0.2), 1e-9);
+  EXPECT_LT((start->at(0.0).position - y).norm(), 1e-9);
+  EXPECT_LT((start->at(T).position - base->at(T).position).norm(), 1e-9);
+  EXPECT_LT((start->at(T + 1.0).position - base->at(T + 1.0).position).norm(), 1e-9);
+  // The offset's own velocity and acceleration are its derivatives and stay within the limits.
+  const double h = 1e-4;
+  double max_accel = 0.0;
+  for (double t = h; t < T - h; t += 0.05) {
+    const wc::OutputReference r = start->at(t), b = base->at(t);
+    const Eigen::Vector2d off_v = r.velocity - b.velocity, off_a = r.acceleration - b.acceleration;
+    const Eigen::Vector2d num_v = ((start->at(t + h).position - base->at(t + h).position) -
+                                   (start->at(t - h).position - base->at(t - h).position)) /
+                                  (2 * h);
+    EXPECT_LT((off_v - num_v).norm(), 1e-5) << t;
+    max_accel = std::max(max_accel, off_a.norm());
+  }
+  EXPECT_LE(max_accel, limits.accel + 1e-9);
+  EXPECT_EQ(wc::startingFrom(base, base->at(0.0).position, limits), base) << "no offset: base";
 }

@@ -24,9 +24,12 @@ struct TrackerConfig {
   PathLimits path_limits;           ///< comfort limits (speed 0.8, accel 0.5, jerk 1.0)
   double limit_margin = 0.7;        ///< the nominal reference uses this share of the comfort limits
   MotionLimits rotation_limits{0.6, 0.8, 1.6};  ///< in-place rotation [rad/s, rad/s^2, rad/s^3]
-  double start_heading_tolerance = 0.5;         ///< [rad] larger: rotate in place before the path
-  double goal_position_tolerance = 0.05;        ///< [m] P_l at the end of the reference
-  double goal_heading_tolerance = 0.05;         ///< [rad]
+  /// A phase starting with P_l off its reference: the offset decays within these (accel,
+  /// jerk) limits of its own (start_offset.h); the rider sees them amplified by the turning.
+  MotionLimits start_offset_limits{0.0, 0.1, 0.2};
+  double start_heading_tolerance = 0.5;   ///< [rad] larger: rotate in place before the path
+  double goal_position_tolerance = 0.05;  ///< [m] P_l at the end of the reference
+  double goal_heading_tolerance = 0.05;   ///< [rad]
   double goal_timeout = 5.0;        ///< [s] after the reference ends, to settle within tolerance
   double stale_pose_timeout = 0.2;  ///< [s]
   double stale_odometry_timeout = 0.2;  ///< [s]
@@ -126,6 +129,8 @@ class PathTracker {
                           const WheelSpeedMeasurement& wheels) const;
   State estimateState(double now, const PoseMeasurement& pose, const Eigen::Vector2d& eta) const;
   void startPhases(const State& x);
+  /// The current phase's reference made to start at the chair's P_l (start_offset.h).
+  void startFromHere(const State& x);
   /// Advances the reference time (governor: anti-windup) and returns the reference.
   OutputReference governedReference(double dt, double error);
   /// At the end of a phase: next phase, goal reached, or goal timeout. False: stop began.
