@@ -23,7 +23,7 @@ Eigen::Vector3d LaserSimulator::laserPose(const Eigen::Vector3d& base) const {
           base.z() + mount_.z()};
 }
 
-Scan LaserSimulator::scan(const Eigen::Vector3d& base_pose) {
+Scan LaserSimulator::scan(const Eigen::Vector3d& base_pose, const std::vector<Disc>& discs) {
   const Eigen::Vector3d sensor = laserPose(base_pose);
   Scan out;
   out.angle_min = -0.5 * params_.laser_fov;
@@ -35,10 +35,15 @@ Scan LaserSimulator::scan(const Eigen::Vector3d& base_pose) {
   for (int i = 0; i < params_.laser_beams; ++i) {
     float range = 0.0f;
     bool valid = false;
-    world_->simulateScanRay(sensor.x(), sensor.y(),
-                            sensor.z() + out.angle_min + i * out.angle_increment, range, valid,
-                            params_.laser_range_max, kFreeThreshold);
+    const double angle = sensor.z() + out.angle_min + i * out.angle_increment;
+    world_->simulateScanRay(sensor.x(), sensor.y(), angle, range, valid, params_.laser_range_max,
+                            kFreeThreshold);
     double r = range;
+    const double to_disc = rayToDiscs(sensor.head<2>(), angle, discs);
+    if (to_disc < (valid ? r : params_.laser_range_max)) {
+      r = to_disc;
+      valid = true;
+    }
     if (params_.laser_range_noise > 0.0) r += params_.laser_range_noise * noise(rng_);
     const bool in_range = valid && r >= params_.laser_range_min && r <= params_.laser_range_max;
     out.ranges[i] = in_range ? static_cast<float>(r) : std::numeric_limits<float>::infinity();

@@ -44,7 +44,7 @@ void Simulator::integrate(double h) {
   applied_ = wheelTorques(command_, brake_, x_.tail<2>(), chair_, params_);
   x_ = wd::integrateRK4(x_, applied_, h, chair_);
   if (params_.slip_noise > 0.0) addSlip(x_.segment<2>(wd::kPsiR) - before.segment<2>(wd::kPsiR));
-  if (checker_ && checker_->outlineCollides(pose())) {
+  if ((checker_ && checker_->outlineCollides(pose())) || touchesDisc(pose())) {
     x_ = before;
     x_.tail<2>().setZero();
     collided_ = true;
@@ -90,7 +90,18 @@ Eigen::Vector3d Simulator::pose() const {
 Eigen::Vector2d Simulator::velocity() const { return wd::bodyVelocity(x_.tail<2>(), chair_); }
 
 bool Simulator::collides(const Eigen::Vector3d& p) const {
-  return checker_ && checker_->collides(p);
+  return (checker_ && checker_->collides(p)) || touchesDisc(p);
+}
+
+bool Simulator::touchesDisc(const Eigen::Vector3d& p) const {
+  if (obstacles_.all().empty()) return false;
+  const std::vector<Disc> present = obstacles_.presentAt(time_);
+  if (present.empty()) return false;
+  const double c = std::cos(p.z()), s = std::sin(p.z());
+  std::vector<Eigen::Vector2d> outline;
+  for (const Eigen::Vector2d& v : chair_.footprint)
+    outline.emplace_back(p.x() + c * v.x() - s * v.y(), p.y() + s * v.x() + c * v.y());
+  return polygonTouchesDiscs(outline, present);
 }
 
 }  // namespace wheelchair_sim

@@ -1,6 +1,8 @@
 // ROS face of the simulator: torques in, sensors and ground truth out, and it owns /clock.
 // Torques come from /wheel_torques, or (~motor_bus = "udp") from an emulated CAN motor
 // controller that the real base driver talks to; the driver then publishes the odometry.
+#include <wheelchair_sim/AddObstacle.h>
+#include <wheelchair_sim/EnableLaser.h>
 #include <wheelchair_sim/SetPose.h>
 #include <wheelchair_sim/motor_plant_adapter.h>
 #include <wheelchair_sim/simulated_chair.h>
@@ -8,11 +10,13 @@
 
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
+#include <nav_msgs/Path.h>
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
+#include <std_srvs/Trigger.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_base_driver/emulated_motor_controller.h>
@@ -83,6 +87,9 @@ sensor_msgs::LaserScan scanMessage(const ros::Time& stamp, const Scan& scan, dou
 
 }  // namespace
 
+/// [wall s] the loop may fall behind ~speed before it stops trying to catch up.
+constexpr double kMaxLag = 0.02;
+
 class SimulatorNodelet : public nodelet::Nodelet {
  public:
   ~SimulatorNodelet() override {
@@ -125,6 +132,12 @@ class SimulatorNodelet : public nodelet::Nodelet {
                     world_path.c_str());
       throw std::runtime_error("initial pose collides");
     }
+    try {
+      loadObstacles(pnh);
+    } catch (const std::exception& e) {
+      NODELET_FATAL("simulator cannot start: ~obstacles: %s", e.what());
+      throw;
+    }
     const std::string motor_bus = pnh.param<std::string>("motor_bus", "");
     if (motor_bus == "udp") {
       startMotorController(pnh);
@@ -139,10 +152,17 @@ class SimulatorNodelet : public nodelet::Nodelet {
     if (publish_odometry_) odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
     truth_pub_ = nh.advertise<nav_msgs::Odometry>("sim/ground_truth", 10);
     collision_pub_ = nh.advertise<std_msgs::Bool>("sim/collision", 1, true);
+    trajectory_pub_ = nh.advertise<nav_msgs::Path>("sim/trajectory", 1, true);
+    trajectory_.header.frame_id = "map";
     if (!motor_controller_)
       torque_sub_ = nh.subscribe("wheel_torques", 10, &SimulatorNodelet::onTorques, this);
     teleport_srv_ = nh.advertiseService("sim/teleport", &SimulatorNodelet::onTeleport, this);
     reset_srv_ = nh.advertiseService("sim/reset", &SimulatorNodelet::onReset, this);
+    add_obstacle_srv_ =
+        nh.advertiseService("sim/add_obstacle", &SimulatorNodelet::onAddObstacle, this);
+    clear_obstacles_srv_ =
+        nh.advertiseService("sim/clear_obstacles", &SimulatorNodelet::onClearObstacles, this);
+    laser_srv_ = nh.advertiseService("sim/enable_laser", &SimulatorNodelet::onEnableLaser, this);
     tf_ = std::make_unique<tf2_ros::TransformBroadcaster>();
     if (publish_laser_tf) {
       static_tf_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
@@ -175,6 +195,63 @@ class SimulatorNodelet : public nodelet::Nodelet {
                  motor_transport_->describe().c_str());
   }
 
+  /// ~obstacles: [{x, y, radius, appear_time}, ...] (radius default 0.15, time default 0).
+  void loadObstacles(ros::NodeHandle& pnh) {
+    XmlRpc::XmlRpcValue list;
+    if (!pnh.getParam("obstacles", list)) return;
+    if (list.getType() != XmlRpc::XmlRpcValue::TypeArray)
+      throw std::runtime_error("~obstacles must be a list of {x, y, radius, appear_time}");
+    for (int i = 0; i < list.size(); ++i) {
+      auto number = [&](const char* key, double fallback) {
+        if (!list[i].hasMember(key)) return fallback;
+        XmlRpc::XmlRpcValue& v = list[i][key];
+        return v.getType() == XmlRpc::XmlRpcValue::TypeInt ? double(int(v)) : double(v);
+      };
+      Disc disc;
+      disc.centre = {number("x", NAN), number("y", NAN)};
+      disc.radius = number("radius", disc.radius);
+      disc.appear_time = number("appear_time", 0.0);
+      chair_sim_->simulator().obstacles().add(disc);  // throws on bad values
+    }
+  }
+
+  bool onAddObstacle(AddObstacle::Request& req, AddObstacle::Response& res) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Disc disc;
+    disc.centre = {req.x, req.y};
+    disc.radius = req.radius;
+    disc.appear_time = req.appear_time;
+    try {
+      chair_sim_->simulator().obstacles().add(disc);
+    } catch (const std::invalid_argument& e) {
+      res.success = false;
+      res.message = e.what();
+      return true;
+    }
+    res.success = true;
+    res.message = "obstacle added";
+    NODELET_INFO("obstacle r=%.2f m at (%.2f, %.2f) from t=%.2f s", req.radius, req.x, req.y,
+                 req.appear_time);
+    return true;
+  }
+
+  bool onClearObstacles(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    chair_sim_->simulator().obstacles().clear();
+    res.success = true;
+    res.message = "obstacles cleared";
+    return true;
+  }
+
+  /// Laser dropout on demand (false: no /scan at all until enabled again).
+  bool onEnableLaser(EnableLaser::Request& req, EnableLaser::Response& res) {
+    laser_on_ = req.enable;
+    res.success = true;
+    res.message = req.enable ? "laser on" : "laser silent";
+    NODELET_WARN("%s", res.message.c_str());
+    return true;
+  }
+
   void onTorques(const wheelchair_msgs::WheelTorques::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!std::isfinite(msg->left) || !std::isfinite(msg->right)) {
@@ -200,10 +277,29 @@ class SimulatorNodelet : public nodelet::Nodelet {
                                  : chair_sim_->teleport(req.x, req.y, req.yaw);
     res.message = res.success ? "moved" : "pose collides or is not finite: chair not moved";
     if (res.success) {
+      if (reset_odometry) trajectory_.poses.clear();  // a new run; a kidnapping stays visible
       chair_sim_->simulator().applyWheelTorques(0.0, 0.0, false);
       publishCollision(false);
     }
     return true;
+  }
+
+  /// The true path for rviz and reports (a point every kTrajectoryStep), latched.
+  void extendTrajectory(const ros::Time& now, const Eigen::Vector3d& pose) {
+    constexpr double kTrajectoryStep = 0.05;  // [m]
+    if (!trajectory_.poses.empty()) {
+      const auto& last = trajectory_.poses.back().pose.position;
+      if (std::hypot(pose.x() - last.x, pose.y() - last.y) < kTrajectoryStep) return;
+    }
+    geometry_msgs::PoseStamped p;
+    p.header.stamp = now;
+    p.header.frame_id = "map";
+    p.pose.position.x = pose.x();
+    p.pose.position.y = pose.y();
+    p.pose.orientation = yawToQuaternion(pose.z());
+    trajectory_.header.stamp = now;
+    trajectory_.poses.push_back(p);
+    trajectory_pub_.publish(trajectory_);
   }
 
   void publishCollision(bool collided) {
@@ -223,7 +319,7 @@ class SimulatorNodelet : public nodelet::Nodelet {
   }
 
   void run() {
-    const ros::WallTime wall_start = ros::WallTime::now();
+    ros::WallTime wall_start = ros::WallTime::now();
     double sim_elapsed = 0.0;
     while (running_ && ros::ok()) {
       {
@@ -239,8 +335,15 @@ class SimulatorNodelet : public nodelet::Nodelet {
       sim_elapsed += step_;
       if (speed_ > 0.0) {
         const ros::WallTime due = wall_start + ros::WallDuration(sim_elapsed / speed_);
-        const ros::WallDuration wait = due - ros::WallTime::now();
-        if (wait > ros::WallDuration(0)) wait.sleep();
+        const ros::WallTime now = ros::WallTime::now();
+        const ros::WallDuration wait = due - now;
+        if (wait > ros::WallDuration(0)) {
+          wait.sleep();
+        } else if (wait < ros::WallDuration(-kMaxLag)) {
+          // Behind after a stall (loaded machine): do not race to catch up — a burst of
+          // simulated time would starve every node of CPU; simulated time runs slower instead.
+          wall_start = now - ros::WallDuration(sim_elapsed / speed_);
+        }
       } else {
         std::this_thread::yield();
       }
@@ -258,9 +361,10 @@ class SimulatorNodelet : public nodelet::Nodelet {
       NODELET_ERROR("COLLISION at (%.2f, %.2f, %.2f): chair stopped and held", p.x(), p.y(), p.z());
       publishCollision(true);
     }
-    if (out.scan) scan_pub_.publish(scanMessage(now, *out.scan, params_.laser_rate));
+    if (out.scan && laser_on_) scan_pub_.publish(scanMessage(now, *out.scan, params_.laser_rate));
     if (!out.odometry_due) return;
     truth_pub_.publish(odometryMessage(now, "map", sim.pose(), sim.velocity()));
+    extendTrajectory(now, sim.pose());
     if (!publish_odometry_) return;
     const WheelOdometry& odo = chair_sim_->odometry();
     odom_pub_.publish(odometryMessage(now, "odom", odo.pose(), odo.velocity()));
@@ -280,10 +384,12 @@ class SimulatorNodelet : public nodelet::Nodelet {
   bool torques_stale_ = true;
   std::mutex mutex_;
   std::atomic<bool> running_{false};
+  std::atomic<bool> laser_on_{true};
   std::thread loop_;
-  ros::Publisher clock_pub_, scan_pub_, odom_pub_, truth_pub_, collision_pub_;
+  ros::Publisher clock_pub_, scan_pub_, odom_pub_, truth_pub_, collision_pub_, trajectory_pub_;
+  nav_msgs::Path trajectory_;
   ros::Subscriber torque_sub_;
-  ros::ServiceServer teleport_srv_, reset_srv_;
+  ros::ServiceServer teleport_srv_, reset_srv_, add_obstacle_srv_, clear_obstacles_srv_, laser_srv_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_tf_;
 };

@@ -1,6 +1,7 @@
 // A SICK-like planar laser scanner ray-cast on the ground-truth grid with MRPT.
 #pragma once
 
+#include <wheelchair_sim/obstacle_discs.h>
 #include <wheelchair_sim/sim_params.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -30,8 +31,9 @@ class LaserSimulator {
   LaserSimulator(const SimParams& params, const Eigen::Vector3d& mount,
                  std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> world);
 
-  /// Scan seen from base_link pose (x, y, theta) in the world.
-  Scan scan(const Eigen::Vector3d& base_pose);
+  /// Scan seen from base_link pose (x, y, theta) in the world, with `discs` (obstacles not
+  /// in the map) in front of the walls.
+  Scan scan(const Eigen::Vector3d& base_pose, const std::vector<Disc>& discs = {});
 
   /// World pose of the laser for a base_link pose.
   Eigen::Vector3d laserPose(const Eigen::Vector3d& base_pose) const;

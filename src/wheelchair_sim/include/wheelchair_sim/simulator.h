@@ -5,6 +5,7 @@
 
 #include <wheelchair_description/model.h>
 #include <wheelchair_sim/footprint_checker.h>
+#include <wheelchair_sim/obstacle_discs.h>
 #include <wheelchair_sim/sim_params.h>
 #include <wheelchair_sim/wheel_plant.h>
 
@@ -50,16 +51,22 @@ class Simulator : public WheelPlant {
   /// resistances).
   const Eigen::Vector2d& appliedTorques() const { return applied_; }
   bool collided() const { return collided_; }
+  /// Does the footprint at `pose` overlap the map or an obstacle disc present now?
   bool collides(const Eigen::Vector3d& pose) const;
+  /// Obstacles that are not in the map (people); the laser sees them too.
+  ObstacleDiscs& obstacles() { return obstacles_; }
+  const ObstacleDiscs& obstacles() const { return obstacles_; }
   const wheelchair_description::ChairParams& chair() const { return chair_; }
 
  private:
   void integrate(double h);
   void addSlip(const Eigen::Vector2d& wheel_increment);
+  bool touchesDisc(const Eigen::Vector3d& pose) const;
 
   wheelchair_description::ChairParams chair_;
   SimParams params_;
   std::optional<FootprintChecker> checker_;
+  ObstacleDiscs obstacles_;
   wheelchair_description::State x_ = wheelchair_description::State::Zero();
   Eigen::Vector2d command_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d applied_ = Eigen::Vector2d::Zero();

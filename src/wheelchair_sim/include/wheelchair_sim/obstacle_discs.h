@@ -1,0 +1,39 @@
+// Obstacles that are not in the map: discs (a person is a 0.3 m disc) that appear at a given
+// simulated time. The laser sees them and the chair collides with them, like map cells.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace wheelchair_sim {
+
+struct Disc {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  ///< [m] in the world (map) frame
+  double radius = 0.15;                              ///< [m]
+  double appear_time = 0.0;  ///< [s] of simulated time from which it is there
+};
+
+class ObstacleDiscs {
+ public:
+  /// Throws std::invalid_argument for a non-finite centre or time, or radius <= 0.
+  void add(const Disc& disc);
+  void clear() { discs_.clear(); }
+  const std::vector<Disc>& all() const { return discs_; }
+  /// The discs present at simulated time `now`.
+  std::vector<Disc> presentAt(double now) const;
+
+ private:
+  std::vector<Disc> discs_;
+};
+
+/// Distance along the ray from `origin` in direction `angle` to the nearest disc boundary,
+/// or +Inf when it misses them all (a ray starting inside a disc hits at 0).
+double rayToDiscs(const Eigen::Vector2d& origin, double angle, const std::vector<Disc>& discs);
+
+/// True if the polygon `outline` (world frame, closed) overlaps any disc: a vertex or the
+/// disc's centre inside the other, or an edge closer to the centre than the radius.
+bool polygonTouchesDiscs(const std::vector<Eigen::Vector2d>& outline,
+                         const std::vector<Disc>& discs);
+
+}  // namespace wheelchair_sim
