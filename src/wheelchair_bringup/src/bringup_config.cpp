@@ -45,6 +45,11 @@ BringupConfig loadBringupConfig(const std::string& path, const PackageFinder& fi
   try {
     const YAML::Node root = YAML::LoadFile(path);
     config.global_params = resolved(root["params"] ? root["params"] : YAML::Node(), find);
+    if (root["num_worker_threads"]) {
+      config.num_worker_threads = root["num_worker_threads"].as<int>();
+      if (config.num_worker_threads < 1)
+        throw std::runtime_error("num_worker_threads must be >= 1");
+    }
     const YAML::Node list = root["nodelets"];
     if (!list || !list.IsSequence() || list.size() == 0)
       throw std::runtime_error("no 'nodelets' list");

@@ -44,6 +44,19 @@ void setParams(const std::string& ns, const YAML::Node& params) {
     ros::param::set(ns + "/" + item.first.as<std::string>(), toXmlRpc(item.second));
 }
 
+/// Per-run overrides: the `wheelchair` node's private parameters ~<nodelet>/<key> (e.g.
+/// `_base_driver/udp_local_port:=47120`, or <param> inside a rostest's <node>) win over the file.
+void overlayPrivateParams(const std::string& nodelet, const std::string& ns) {
+  XmlRpc::XmlRpcValue overrides;
+  if (!ros::param::get("~" + nodelet, overrides) ||
+      overrides.getType() != XmlRpc::XmlRpcValue::TypeStruct)
+    return;
+  for (auto& item : overrides) {
+    ros::param::set(ns + "/" + item.first, item.second);
+    ROS_INFO("%s/%s overridden on the command line", ns.c_str(), item.first.c_str());
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -61,11 +74,14 @@ int main(int argc, char** argv) {
     return 1;
   }
   setParams("", config.global_params);
+  if (!ros::param::has("~num_worker_threads"))  // read by the manager; a run may override it
+    ros::param::set("~num_worker_threads", config.num_worker_threads);
   nodelet::Loader loader(true);  // a manager others could also load into
   const nodelet::V_string no_argv;
   for (const auto& spec : config.nodelets) {
     const std::string name = ros::names::resolve(spec.name);
     setParams(name, spec.params);
+    overlayPrivateParams(spec.name, name);
     nodelet::M_string remaps;
     for (const auto& [from, to] : spec.remaps)
       remaps[ros::names::resolve(from)] = ros::names::resolve(to);

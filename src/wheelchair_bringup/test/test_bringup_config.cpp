@@ -42,6 +42,14 @@ TEST(BringupConfig, ReadsNodeletsParamsAndRemaps) {
   EXPECT_DOUBLE_EQ(config.nodelets[0].params["rate"].as<double>(), 2.5);
   EXPECT_EQ(config.nodelets[0].params["list"][1].as<std::string>(), "/opt/share/wheelchair_test");
   EXPECT_EQ(config.nodelets[1].remaps.at("switch"), "/tongue/switch");
+  EXPECT_EQ(config.num_worker_threads, 8);  // the default when the file does not say
+  std::remove(path.c_str());
+}
+
+TEST(BringupConfig, ManagerThreadsFromTheFile) {
+  const std::string path =
+      writeTemp("num_worker_threads: 3\nnodelets:\n  - {name: a, type: x/A}\n");
+  EXPECT_EQ(loadBringupConfig(path, findFake).num_worker_threads, 3);
   std::remove(path.c_str());
 }
 
@@ -62,5 +70,6 @@ TEST(BringupConfig, BadFilesNameTheFileAndTheProblem) {
   expectError("nodelets:\n  - {name: a, type: x/A, params: {f: $(find nope)/x}}\n",
               "package 'nope' not found");
   expectError("nodelets: [\n", "bad YAML");
+  expectError("num_worker_threads: 0\nnodelets:\n  - {name: a, type: x/A}\n", "num_worker_threads");
   EXPECT_THROW(loadBringupConfig("/nonexistent/chair.yaml", findFake), std::runtime_error);
 }

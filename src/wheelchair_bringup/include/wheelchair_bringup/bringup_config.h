@@ -20,6 +20,9 @@ struct NodeletSpec {
 
 struct BringupConfig {
   YAML::Node global_params;  ///< set at the root of the parameter server (e.g. use_sim_time)
+  /// Threads of the nodelet manager: every nodelet's callbacks run on one of them at a time, so
+  /// a slow callback (a scan update, a plan) must not starve the base driver's timer.
+  int num_worker_threads = 8;
   std::vector<NodeletSpec> nodelets;
 };
 
@@ -27,8 +30,9 @@ struct BringupConfig {
 using PackageFinder = std::function<std::string(const std::string&)>;
 std::string substitute(const std::string& text, const PackageFinder& find);
 
-/// Reads `params: {...}` and `nodelets: [{name, type, params, remap}, ...]`; every string
-/// scalar has "$(find pkg)" resolved. Throws std::runtime_error naming the file and problem.
+/// Reads `num_worker_threads: N` (optional, >= 1), `params: {...}` and `nodelets: [{name, type,
+/// params, remap}, ...]`; every string scalar has "$(find pkg)" resolved. Throws std::runtime_error
+/// naming the file and problem.
 BringupConfig loadBringupConfig(const std::string& path, const PackageFinder& find);
 
 }  // namespace wheelchair_bringup
