@@ -40,6 +40,7 @@ class SafetyNodelet : public nodelet::Nodelet {
     pnh.param("corridor_half_width", limits.corridor_half_width, limits.corridor_half_width);
     pnh.param("map_tolerance", limits.map_tolerance, limits.map_tolerance);
     pnh.param("min_obstacle_returns", limits.min_obstacle_returns, limits.min_obstacle_returns);
+    pnh.param("driver_fault_grace", limits.driver_fault_grace, limits.driver_fault_grace);
     pnh.param<std::string>("map_frame", map_frame_, "map");
     pnh.param<std::string>("base_frame", base_frame_, "base_link");
     supervisor_ = std::make_unique<SafetySupervisor>(limits);
@@ -128,12 +129,19 @@ class SafetyNodelet : public nodelet::Nodelet {
     supervisor_->onUserStop(ros::Time::now().toSec());
   }
 
+  /// A new goal is the rider's command to go on: the verdict goes out at once, before the
+  /// planner's path reaches the controller (which ignores paths while stopped).
   void onGoal(const geometry_msgs::PoseStamped::ConstPtr&) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onUserCommand(ros::Time::now().toSec());
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      supervisor_->onUserCommand(ros::Time::now().toSec());
+    }
+    update();
   }
 
-  void onTimer(const ros::TimerEvent&) {
+  void onTimer(const ros::TimerEvent&) { update(); }
+
+  void update() {
     geometry_msgs::TransformStamped base_in_map;
     bool have_pose = false;
     try {

@@ -83,7 +83,8 @@ void SafetySupervisor::onScan(double stamp, const std::vector<Eigen::Vector2d>& 
       ++unexpected_returns_;
 }
 
-void SafetySupervisor::onDriverStatus(double, bool fault, const std::string& detail) {
+void SafetySupervisor::onDriverStatus(double stamp, bool fault, const std::string& detail) {
+  if (fault && !driver_fault_) driver_fault_since_ = stamp;
   driver_fault_ = fault;
   driver_detail_ = detail;
 }
@@ -135,7 +136,8 @@ bool SafetySupervisor::inCorridorAhead(const Eigen::Vector2d& point) const {
 
 SafetyVerdict SafetySupervisor::evaluate(double now) const {
   if (user_stop_) return stopFor(StopReason::kUserStop, "switch pressed while driving");
-  if (driver_fault_) return stopFor(StopReason::kDriverFault, driver_detail_);
+  if (driver_fault_ && now - driver_fault_since_ >= limits_.driver_fault_grace)
+    return stopFor(StopReason::kDriverFault, driver_detail_);
   if (scan_stamp_ < 0.0 || pose_stamp_ < 0.0 || localization_stamp_ < 0.0)
     return stopFor(StopReason::kNoData, scan_stamp_ < 0.0   ? "no laser scan yet"
                                         : pose_stamp_ < 0.0 ? "no pose yet"

@@ -92,12 +92,27 @@ TEST(SafetySupervisor, GrowingCovarianceStops) {
   EXPECT_EQ(s.check(10.1).reason, StopReason::kCovarianceTooLarge);
 }
 
-TEST(SafetySupervisor, DriverFaultStops) {
+TEST(SafetySupervisor, DriverFaultThatPersistsStops) {
   SafetySupervisor s = healthy();
-  s.onDriverStatus(10.05, true, "motor controller heartbeat lost");
-  const SafetyVerdict v = s.check(10.1);
+  const double grace = SafetyLimits().driver_fault_grace;
+  s.onDriverStatus(10.0, true, "motor controller heartbeat lost");
+  EXPECT_FALSE(s.check(10.0 + 0.5 * grace).stop);  // the driver brakes by itself meanwhile
+  s.onScan(10.0 + grace, {});
+  s.onPose(10.0 + grace, Eigen::Vector3d(2.0, 2.0, 0.0));
+  const SafetyVerdict v = s.check(10.0 + grace + 0.01);
   EXPECT_EQ(v.reason, StopReason::kDriverFault);
   EXPECT_EQ(v.detail, "motor controller heartbeat lost");
+}
+
+TEST(SafetySupervisor, DriverFaultThatClearsWithinTheGraceDoesNotStop) {
+  SafetySupervisor s = healthy();
+  const double grace = SafetyLimits().driver_fault_grace;
+  s.onDriverStatus(10.0, true, "command_timeout");
+  s.onDriverStatus(10.0 + 0.2 * grace, false, "driving");
+  s.onDriverStatus(10.0 + 0.6 * grace, true, "command_timeout");  // the grace restarts
+  s.onScan(10.0 + grace, {});
+  s.onPose(10.0 + grace, Eigen::Vector3d(2.0, 2.0, 0.0));
+  EXPECT_FALSE(s.check(10.0 + grace + 0.01).stop) << s.check(10.0 + grace + 0.01).detail;
 }
 
 TEST(SafetySupervisor, PersonSteppingOntoThePathAheadStops) {

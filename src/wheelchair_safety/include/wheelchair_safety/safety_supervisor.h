@@ -23,6 +23,10 @@ struct SafetyLimits {
   double corridor_half_width = 0.41;  ///< [m] chair half-width + 10 cm either side of the path
   double map_tolerance = 0.15;        ///< [m] a return this close to a mapped obstacle is the map
   int min_obstacle_returns = 3;       ///< returns needed to call an obstacle (noise rejection)
+  /// [s] a driver fault must last this long: the driver brakes at once by itself, and a motor
+  /// controller that re-arms within one command period (a late command) is not worth a
+  /// latched stop; a fault that persists (hardware, lost bus) is.
+  double driver_fault_grace = 0.25;
 };
 
 enum class StopReason {
@@ -60,6 +64,7 @@ class SafetySupervisor {
   void onPose(double stamp, const Eigen::Vector3d& pose);
   /// A laser scan's returns, already in the map frame; non-finite points are ignored.
   void onScan(double stamp, const std::vector<Eigen::Vector2d>& returns_in_map);
+  /// The base driver's status at `stamp`; a fault counts once it has lasted driver_fault_grace.
   void onDriverStatus(double stamp, bool fault, const std::string& detail);
   void onUserStop(double stamp);
   /// A new command from the rider (a new goal): clears a latched stop. If a condition still
@@ -88,6 +93,7 @@ class SafetySupervisor {
   Eigen::Vector3d pose_ = Eigen::Vector3d::Zero();
   int unexpected_returns_ = 0;
   bool driver_fault_ = false;
+  double driver_fault_since_ = 0.0;
   std::string driver_detail_;
   bool user_stop_ = false;
   SafetyVerdict latched_;
