@@ -1,5 +1,8 @@
 // ROS layer of the one-switch interface: /switch events and named places in, goals, stop
-// requests, announcements and rviz markers out.
+// requests, announcements and rviz markers out. It also tells the rider what became of a
+// goal: refused by the planner (with its reason), reached or aborted by the controller, or
+// stopped by the safety supervisor; each of those ends the drive and restarts scanning.
+#include <wheelchair_harmonic_planner/PlanCertificate.h>
 #include <wheelchair_hmi/places.h>
 #include <wheelchair_hmi/switch_scanner.h>
 #include <wheelchair_msgs/GoToPlace.h>
@@ -13,6 +16,7 @@
 #include <pluginlib/class_list_macros.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <mutex>
 
@@ -46,6 +50,13 @@ class HmiNodelet : public nodelet::Nodelet {
     go_to_sub_ = nh.subscribe("hmi/go_to", 1, &HmiNodelet::onGoTo, this);
     finished_sub_ = nh.subscribe("hmi/finished", 1, &HmiNodelet::onFinished, this);
     go_to_srv_ = nh.advertiseService("go_to_place", &HmiNodelet::onGoToService, this);
+    std::string controller_status, safety_status;
+    pnh.param<std::string>("controller_status", controller_status, "controller/status");
+    pnh.param<std::string>("safety_status", safety_status, "safety/status");
+    outcome_subs_.push_back(nh.subscribe("move_base_simple/goal", 1, &HmiNodelet::onGoal, this));
+    outcome_subs_.push_back(nh.subscribe("plan_certificate", 1, &HmiNodelet::onPlan, this));
+    outcome_subs_.push_back(nh.subscribe(controller_status, 5, &HmiNodelet::onController, this));
+    outcome_subs_.push_back(nh.subscribe(safety_status, 5, &HmiNodelet::onSafety, this));
     timer_ = nh.createTimer(ros::Duration(0.1), &HmiNodelet::onTimer, this);
     std::lock_guard<std::mutex> lock(mutex_);
     handle(scanner_->start(ros::Time::now().toSec()));
@@ -63,6 +74,61 @@ class HmiNodelet : public nodelet::Nodelet {
 
   void onFinished(const std_msgs::Empty::ConstPtr&) {
     std::lock_guard<std::mutex> lock(mutex_);
+    handle(scanner_->finished(ros::Time::now().toSec()));
+  }
+
+  /// Any goal (ours, rviz's): the chair is about to drive; a press stops it. The planner's
+  /// answer may be processed before or after this (different nodelets, different threads).
+  void onGoal(const geometry_msgs::PoseStamped::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    scanner_->driving(ros::Time::now().toSec());
+    goal_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+    goal_pending_ = true;
+    if (certificate_ && certificate_->header.stamp >= goal_stamp_) answerGoal();
+  }
+
+  void onPlan(const wheelchair_harmonic_planner::PlanCertificate::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    certificate_ = msg;
+    if (goal_pending_ && msg->header.stamp >= goal_stamp_) answerGoal();
+  }
+
+  /// The planner's answer to the goal: a refusal is told to the rider, the chair stays.
+  void answerGoal() {
+    goal_pending_ = false;
+    if (certificate_->success) {
+      announce("Route found: " + formatLength(certificate_->length) + ".");
+      return;
+    }
+    endDrive("Cannot go there: " + certificate_->failure_reason + ". The chair stays where it is.");
+  }
+
+  /// The controller's state: "goal_reached" or "aborted: why" ends the drive.
+  void onController(const std_msgs::String::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (msg->data.rfind("goal_reached", 0) == 0) endDrive("Arrived.");
+    if (msg->data.rfind("aborted", 0) == 0) endDrive("Stopped: " + msg->data + ".");
+  }
+
+  /// The supervisor's verdict: "safe" or "<reason>: <detail>".
+  void onSafety(const std_msgs::String::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (msg->data == "safe") last_safety_.clear();
+    if (msg->data == "safe" || msg->data == last_safety_) return;
+    last_safety_ = msg->data;
+    endDrive("Safety stop: " + msg->data + ". Choose a destination to go on.");
+  }
+
+  static std::string formatLength(double metres) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.1f m", metres);
+    return text;
+  }
+
+  /// While driving: tells the rider why the drive ended and scans rooms again.
+  void endDrive(const std::string& why) {
+    if (scanner_->phase() != SwitchScanner::Phase::kDriving) return;
+    announce(why);
     handle(scanner_->finished(ros::Time::now().toSec()));
   }
 
@@ -146,6 +212,11 @@ class HmiNodelet : public nodelet::Nodelet {
   std::string frame_id_;
   ros::Publisher goal_pub_, stop_pub_, announce_pub_, marker_pub_;
   ros::Subscriber switch_sub_, go_to_sub_, finished_sub_;
+  std::vector<ros::Subscriber> outcome_subs_;
+  bool goal_pending_ = false;
+  ros::Time goal_stamp_;
+  wheelchair_harmonic_planner::PlanCertificate::ConstPtr certificate_;
+  std::string last_safety_;
   ros::ServiceServer go_to_srv_;
   ros::Timer timer_;
 };

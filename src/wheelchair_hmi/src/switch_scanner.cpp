@@ -120,6 +120,11 @@ ScanOutput SwitchScanner::finished(double now) {
   return enterGroups(now);
 }
 
+void SwitchScanner::driving(double now) {
+  phase_ = Phase::kDriving;
+  last_step_ = now;
+}
+
 ScanEffort measureScanEffort(const std::vector<Place>& places, const ScannerOptions& options) {
   ScanEffort effort;
   for (size_t target = 0; target < places.size(); ++target) {

@@ -41,6 +41,9 @@ class SwitchScanner {
   ScanOutput press(double now);
   /// The chair reached (or gave up on) its goal: scan rooms again.
   ScanOutput finished(double now);
+  /// A goal was sent another way (named place by service/topic, rviz): the chair drives, so a
+  /// press now stops it.
+  void driving(double now);
 
   Phase phase() const { return phase_; }
   const std::vector<Place>& places() const { return places_; }
