@@ -4,6 +4,7 @@
 
 #include <pluginlib/class_list_macros.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -35,8 +36,19 @@ void HarmonicPlanner::initialize(const std::string& name,
         "HarmonicPlanner: tolerance > 0, max_iterations >= 1 and "
         "omega in [0, 2) are required");
   }
+  const std::string solver = getParam(params, "solver", std::string("sor"));
+  if (solver != "sor" && solver != "multigrid") {
+    throw std::invalid_argument("HarmonicPlanner: solver must be 'sor' or 'multigrid'");
+  }
+  s.method = solver == "sor" ? HarmonicSolverParams::Method::kSor
+                             : HarmonicSolverParams::Method::kMultigrid;
+  if (s.method == HarmonicSolverParams::Method::kMultigrid && params.count("max_iterations") == 0) {
+    s.max_iterations = 2000;  // V-cycles
+  }
   solver_params_ = s;
   cspace_ = std::make_unique<ConfigSpace>(map, configSpaceParams(params));
+  map_geometry_ = map;
+  map_geometry_.data.clear();
   solution_current_ = false;  // the previous solution stays as a warm start
 }
 
@@ -92,6 +104,25 @@ bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vec
     return finish(false);
   }
   return finish(true);
+}
+
+bool HarmonicPlanner::potentialGrid(wheelchair_mapping::OccupancyMap& grid) const {
+  if (!solution_ || solution_->width != map_geometry_.width ||
+      solution_->height != map_geometry_.height) {
+    return false;
+  }
+  grid = map_geometry_;
+  double lowest = 0.0;
+  for (const double l : solution_->log_u)
+    if (std::isfinite(l)) lowest = std::min(lowest, l);
+  grid.data.resize(solution_->log_u.size());
+  for (size_t k = 0; k < grid.data.size(); ++k) {
+    const double l = solution_->log_u[k];
+    grid.data[k] = !std::isfinite(l) ? int8_t{-1}
+                   : lowest < 0.0    ? static_cast<int8_t>(std::lround(100.0 * l / lowest))
+                                     : int8_t{0};
+  }
+  return true;
 }
 
 }  // namespace wheelchair_harmonic_planner

@@ -1,8 +1,10 @@
 #include <wheelchair_harmonic_planner/harmonic_solver.h>
+#include <wheelchair_harmonic_planner/scaled_multigrid.h>
+
+#include "harmonic_stencil.h"
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <stdexcept>
 
 namespace wheelchair_harmonic_planner {
@@ -10,27 +12,6 @@ namespace wheelchair_harmonic_planner {
 namespace {
 
 constexpr double kNegInf = -std::numeric_limits<double>::infinity();
-
-/// Free cells connected to the goal (4-neighbourhood), with their breadth-first distance.
-std::vector<int> reachableDistances(const ConfigSpace& cs, size_t goal) {
-  std::vector<int> dist(static_cast<size_t>(cs.width()) * cs.height(), -1);
-  const auto& free = cs.freeMask();
-  const long w = cs.width();
-  std::deque<size_t> queue{goal};
-  dist[goal] = 0;
-  while (!queue.empty()) {
-    const size_t k = queue.front();
-    queue.pop_front();
-    for (const long off : {1L, -1L, w, -w}) {
-      const size_t n = static_cast<size_t>(static_cast<long>(k) + off);
-      if (free[n] && dist[n] < 0) {
-        dist[n] = dist[k] + 1;
-        queue.push_back(n);
-      }
-    }
-  }
-  return dist;
-}
 
 /// Optimal SOR factor for the slowest mode of a disc of the widest free radius R [cells]:
 /// Jacobi spectral radius rho = 1 - lambda / 4 with lambda = (2.405 / R)^2.
@@ -43,67 +24,6 @@ double estimateOmega(const ConfigSpace& cs) {
         r_max = std::max(r_max, (cs.obstacleDistance(ix, iy) - hard) / cs.resolution() + 1.0);
   const double rho = std::max(0.0, 1.0 - std::pow(2.405 / r_max, 2) / 4.0);
   return std::min(1.95, 2.0 / (1.0 + std::sqrt(1.0 - rho * rho)));
-}
-
-/// The discrete operator: for free cell k, u_k = sum_j w_kj u_j / sum_j w_kj over its four
-/// neighbours; edge conductance w_kj = (sigma_k + sigma_j) / 2 (sigma_j := sigma_k for
-/// obstacles, whose u is 0). With sigma = 1 this is the paper's four-neighbour average.
-struct Stencil {
-  std::vector<size_t> cells;    ///< free cells connected to the goal, goal excluded
-  std::vector<double> weight;   ///< 4 normalized weights per listed cell (E, W, N, S)
-  std::vector<uint8_t> active;  ///< 1 for cells whose log u is finite (incl. goal)
-};
-
-Stencil buildStencil(const ConfigSpace& cs, const std::vector<int>& dist, size_t goal,
-                     bool use_conductance) {
-  Stencil s;
-  const long w = cs.width();
-  const long offsets[4] = {1, -1, w, -w};
-  s.active.assign(dist.size(), 0);
-  for (size_t k = 0; k < dist.size(); ++k) {
-    if (dist[k] < 0) continue;
-    s.active[k] = 1;
-    if (k == goal) continue;
-    s.cells.push_back(k);
-  }
-  auto sigma = [&](size_t k) {
-    return use_conductance ? cs.conductance(static_cast<int>(k % w), static_cast<int>(k / w)) : 1.0;
-  };
-  s.weight.resize(4 * s.cells.size());
-  for (size_t c = 0; c < s.cells.size(); ++c) {
-    const size_t k = s.cells[c];
-    double total = 0.0;
-    for (int d = 0; d < 4; ++d) {
-      const size_t n = static_cast<size_t>(static_cast<long>(k) + offsets[d]);
-      const double edge = 0.5 * (sigma(k) + (s.active[n] ? sigma(n) : sigma(k)));
-      s.weight[4 * c + d] = s.active[n] ? edge : 0.0;
-      total += edge;
-    }
-    for (int d = 0; d < 4; ++d) s.weight[4 * c + d] /= total;
-  }
-  return s;
-}
-
-/// Scaled coefficients a_kj = w_kj exp(l_j - l_k) for v = u / exp(l); returns the max relative
-/// residual |sum_j a_kj - 1| of the current log field.
-double scaleCoefficients(const Stencil& s, const std::vector<double>& l, long w,
-                         std::vector<double>& a) {
-  const long offsets[4] = {1, -1, w, -w};
-  double residual = 0.0;
-  for (size_t c = 0; c < s.cells.size(); ++c) {
-    const size_t k = s.cells[c];
-    double sum = 0.0;
-    for (int d = 0; d < 4; ++d) {
-      const double wt = s.weight[4 * c + d];
-      const double coef =
-          wt > 0.0 ? wt * std::exp(l[static_cast<size_t>(static_cast<long>(k) + offsets[d])] - l[k])
-                   : 0.0;
-      a[4 * c + d] = coef;
-      sum += coef;
-    }
-    residual = std::max(residual, std::abs(sum - 1.0));
-  }
-  return residual;
 }
 
 /// One SOR sweep on v (forward or backward); v may not drop below half its old value.
@@ -125,24 +45,13 @@ bool HarmonicSolution::reachable(int ix, int iy) const {
   return ix >= 0 && iy >= 0 && ix < width && iy < height && std::isfinite(at(ix, iy));
 }
 
-HarmonicSolution solveHarmonic(const ConfigSpace& cs, int goal_ix, int goal_iy,
-                               const HarmonicSolverParams& params,
-                               const HarmonicSolution* warm_start) {
-  if (!cs.isFree(goal_ix, goal_iy)) {
-    throw std::invalid_argument("solveHarmonic: goal cell is not free");
-  }
-  HarmonicSolution sol;
-  sol.width = cs.width();
-  sol.height = cs.height();
-  sol.goal_ix = goal_ix;
-  sol.goal_iy = goal_iy;
-  const long w = cs.width();
-  const size_t goal = cs.index(goal_ix, goal_iy);
-  const std::vector<int> dist = reachableDistances(cs, goal);
-  const Stencil stencil = buildStencil(cs, dist, goal, params.use_conductance);
+namespace {
 
-  // Initial guess: warm start where available, else exponential decay with the BFS distance at
-  // the rate pi / width of a corridor whose mean wall distance matches the free space's.
+/// Initial guess: warm start where available, else exponential decay with the BFS distance at
+/// the rate pi / width of a corridor whose mean wall distance matches the free space's.
+void initialGuess(const ConfigSpace& cs, const Stencil& stencil, const std::vector<int>& dist,
+                  const HarmonicSolution* warm, HarmonicSolution& sol) {
+  const long w = cs.width();
   double mean_wall = 1.0;
   {
     const double hard = cs.params().inscribed_radius + cs.params().min_clearance;
@@ -154,25 +63,26 @@ HarmonicSolution solveHarmonic(const ConfigSpace& cs, int goal_ix, int goal_iy,
     mean_wall = stencil.cells.empty() ? 1.0 : std::max(0.5, sum / stencil.cells.size());
   }
   const double decay = M_PI / (4.0 * mean_wall);
-  const bool warm = warm_start != nullptr && warm_start->width == sol.width &&
-                    warm_start->height == sol.height && warm_start->goal_ix == goal_ix &&
-                    warm_start->goal_iy == goal_iy;
-  sol.warm_started = warm;
   sol.log_u.assign(dist.size(), kNegInf);
-  sol.log_u[goal] = 0.0;
+  sol.log_u[cs.index(sol.goal_ix, sol.goal_iy)] = 0.0;
   for (const size_t k : stencil.cells) {
-    const double guess = warm ? warm_start->log_u[k] : kNegInf;
+    const double guess = warm ? warm->log_u[k] : kNegInf;
     sol.log_u[k] = std::isfinite(guess) ? guess : -decay * dist[k];
   }
+}
 
+/// Symmetric SOR on the rescaled equation, rescaling every params.sweeps_per_rescale sweeps.
+void solveSor(const ConfigSpace& cs, const Stencil& stencil, const HarmonicSolverParams& params,
+              HarmonicSolution& sol) {
+  const long w = cs.width();
   sol.omega = params.omega > 0.0 ? params.omega : estimateOmega(cs);
   std::vector<double> a(4 * stencil.cells.size());
-  std::vector<double> v(dist.size(), 0.0);
-  v[goal] = 1.0;
+  std::vector<double> v(sol.log_u.size(), 0.0);
+  v[cs.index(sol.goal_ix, sol.goal_iy)] = 1.0;
   const int max_iter = std::max(1, params.max_iterations);
-  bool coarse_phase = !warm;
+  bool coarse_phase = !sol.warm_started;
   while (true) {
-    sol.residual = scaleCoefficients(stencil, sol.log_u, w, a);
+    sol.residual = relativeResidual(stencil, sol.log_u, w, &a);
     if (sol.residual < params.tolerance) {
       sol.converged = true;
       break;
@@ -193,6 +103,61 @@ HarmonicSolution solveHarmonic(const ConfigSpace& cs, int goal_ix, int goal_iy,
       change = std::max(change, std::abs(dl));
     }
     if (coarse_phase && change < 0.5) coarse_phase = false;
+  }
+}
+
+/// V-cycles on the rescaled equation, rescaling after every params.cycles_per_rescale cycles.
+void solveMultigrid(const ConfigSpace& cs, const Stencil& stencil,
+                    const HarmonicSolverParams& params, HarmonicSolution& sol) {
+  const size_t n = sol.log_u.size();
+  std::vector<uint8_t> unknown(n, 0);
+  std::vector<double> weight(4 * n, 0.0);
+  for (size_t c = 0; c < stencil.cells.size(); ++c) {
+    unknown[stencil.cells[c]] = 1;
+    std::copy_n(&stencil.weight[4 * c], 4, &weight[4 * stencil.cells[c]]);
+  }
+  ScaledMultigrid mg(cs.width(), cs.height(), std::move(unknown), std::move(weight),
+                     cs.index(sol.goal_ix, sol.goal_iy), params.multigrid);
+  const int max_iter = std::max(1, params.max_iterations);
+  while (true) {
+    sol.residual = mg.rescale(sol.log_u);
+    if (sol.residual < params.tolerance) {
+      sol.converged = true;
+      break;
+    }
+    if (sol.iterations >= max_iter) break;
+    for (int c = 0; c < std::max(1, params.cycles_per_rescale) && sol.iterations < max_iter;
+         ++c, ++sol.iterations) {
+      mg.vcycle();
+    }
+    mg.correct(sol.log_u);
+  }
+}
+
+}  // namespace
+
+HarmonicSolution solveHarmonic(const ConfigSpace& cs, int goal_ix, int goal_iy,
+                               const HarmonicSolverParams& params,
+                               const HarmonicSolution* warm_start) {
+  if (!cs.isFree(goal_ix, goal_iy)) {
+    throw std::invalid_argument("solveHarmonic: goal cell is not free");
+  }
+  HarmonicSolution sol;
+  sol.width = cs.width();
+  sol.height = cs.height();
+  sol.goal_ix = goal_ix;
+  sol.goal_iy = goal_iy;
+  const size_t goal = cs.index(goal_ix, goal_iy);
+  const std::vector<int> dist = reachableDistances(cs, goal);
+  const Stencil stencil = buildStencil(cs, dist, goal, params.use_conductance);
+  sol.warm_started = warm_start != nullptr && warm_start->width == sol.width &&
+                     warm_start->height == sol.height && warm_start->goal_ix == goal_ix &&
+                     warm_start->goal_iy == goal_iy;
+  initialGuess(cs, stencil, dist, sol.warm_started ? warm_start : nullptr, sol);
+  if (params.method == HarmonicSolverParams::Method::kSor) {
+    solveSor(cs, stencil, params, sol);
+  } else {
+    solveMultigrid(cs, stencil, params, sol);
   }
   return sol;
 }

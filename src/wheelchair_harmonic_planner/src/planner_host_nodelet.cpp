@@ -75,6 +75,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_);
     plan_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
     cert_pub_ = nh.advertise<PlanCertificate>("plan_certificate", 1, true);
+    potential_pub_ = pnh.advertise<nav_msgs::OccupancyGrid>("potential", 1, true);
     map_sub_ = nh.subscribe("map", 1, &PlannerHostNodelet::onMap, this);
     goal_sub_ = nh.subscribe("move_base_simple/goal", 1, &PlannerHostNodelet::onGoal, this);
     service_ = pnh.advertiseService("make_plan", &PlannerHostNodelet::onMakePlan, this);
@@ -201,6 +202,11 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     }
     plan_pub_.publish(path);  // an empty path on failure: the controller stops
     cert_pub_.publish(toMsg(cert, path.header));
+    wheelchair_mapping::OccupancyMap potential;
+    if (have_map_ && planner_->potentialGrid(potential)) {
+      potential_pub_.publish(
+          wheelchair_mapping::toOccupancyGrid(potential, map_frame_, path.header.stamp));
+    }
     return {cert, path};
   }
 
@@ -237,7 +243,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   ParameterMap params_;
   tf2_ros::Buffer tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
-  ros::Publisher plan_pub_, cert_pub_;
+  ros::Publisher plan_pub_, cert_pub_, potential_pub_;
   ros::Subscriber map_sub_, goal_sub_;
   ros::ServiceServer service_;
   std::mutex mutex_;

@@ -123,6 +123,53 @@ TEST(HarmonicExact, WarmStartConvergesFasterToTheSameSolution) {
   }
 }
 
+namespace {
+
+/// Both solvers on the same C-space and goal agree cell by cell (relative to |log u|).
+void expectMultigridMatchesSor(const ConfigSpace& cs, int gx, int gy, double tolerance,
+                               double agreement) {
+  HarmonicSolverParams sp;
+  sp.tolerance = tolerance;
+  sp.method = HarmonicSolverParams::Method::kSor;
+  const HarmonicSolution sor = solveHarmonic(cs, gx, gy, sp);
+  sp.method = HarmonicSolverParams::Method::kMultigrid;
+  sp.max_iterations = 2000;
+  const HarmonicSolution mg = solveHarmonic(cs, gx, gy, sp);
+  ASSERT_TRUE(sor.converged);
+  ASSERT_TRUE(mg.converged) << "residual " << mg.residual << " after " << mg.iterations;
+  EXPECT_LT(mg.residual, tolerance);
+  for (size_t k = 0; k < sor.log_u.size(); ++k) {
+    if (std::isfinite(sor.log_u[k])) {
+      ASSERT_NEAR(mg.log_u[k], sor.log_u[k], agreement * std::max(1.0, std::abs(sor.log_u[k])))
+          << "cell " << k;
+    } else {
+      ASSERT_FALSE(std::isfinite(mg.log_u[k])) << "cell " << k;
+    }
+  }
+}
+
+}  // namespace
+
+TEST(HarmonicExact, MultigridAgreesWithSorOnRandomGridsAndAMaze) {
+  for (uint32_t seed = 1; seed <= 3; ++seed) {
+    std::mt19937 rng(seed);
+    OccupancyMap m = makeCorridor(3.0, 3.0, 0.05, 1);  // 62 x 62 with a wall ring
+    std::bernoulli_distribution blocked(0.15);
+    for (int iy = 1; iy < 61; ++iy)
+      for (int ix = 1; ix < 61; ++ix)
+        if (blocked(rng)) m.at(ix, iy) = wheelchair_mapping::kOccupied;
+    m.at(30, 30) = wheelchair_mapping::kFree;
+    expectMultigridMatchesSor(ConfigSpace(m, pointRobot()), 30, 30, 1e-10, 1e-6);
+  }
+  // The chair's C-space with the clearance band (conductance) in a maze, goal in a corner.
+  const ConfigSpace maze(makeMaze(144, 24, 4, 3), ConfigSpaceParams());
+  double gx, gy;
+  mazePassageCentre(4, 4, 24, 4, 0.05, gx, gy);
+  int gix, giy;
+  ASSERT_TRUE(maze.worldToCell(gx, gy, gix, giy));
+  expectMultigridMatchesSor(maze, gix, giy, 1e-8, 1e-5);
+}
+
 TEST(HarmonicExact, GoalInObstacleIsRejected) {
   const ConfigSpace cs(makeCorridor(1.0, 0.5, 0.05), pointRobot());
   EXPECT_THROW(solveHarmonic(cs, 0, 0, HarmonicSolverParams()), std::invalid_argument);

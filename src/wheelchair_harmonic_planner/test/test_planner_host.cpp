@@ -10,6 +10,9 @@
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 
+#include <algorithm>
+#include <cmath>
+
 using wheelchair_harmonic_planner::MakePlan;
 using wheelchair_harmonic_planner::PlanCertificate;
 
@@ -49,6 +52,10 @@ TEST(PlannerHost, BothPluginsPlanOnAPublishedMapAndReplanWhenItChanges) {
       nh.subscribe<nav_msgs::Path>("plan", 1, [&](const nav_msgs::Path::ConstPtr& m) { plan = m; });
   auto cert_sub = nh.subscribe<PlanCertificate>(
       "plan_certificate", 1, [&](const PlanCertificate::ConstPtr& m) { cert = m; });
+  nav_msgs::OccupancyGrid::ConstPtr potential;
+  auto potential_sub = nh.subscribe<nav_msgs::OccupancyGrid>(
+      "harmonic_host/potential", 1,
+      [&](const nav_msgs::OccupancyGrid::ConstPtr& m) { potential = m; });
   map_pub.publish(wheelchair_mapping::toOccupancyGrid(map, "map", ros::Time::now()));
 
   for (const std::string host : {"harmonic_host", "ompl_host"}) {
@@ -74,6 +81,24 @@ TEST(PlannerHost, BothPluginsPlanOnAPublishedMapAndReplanWhenItChanges) {
     EXPECT_NE(srv.response.certificate.planner.find(host == "harmonic_host" ? "Harmonic" : "Ompl"),
               std::string::npos);
   }
+
+  // The harmonic host's potential for rviz (latched): on the map's cells, 0 at the goal (5.0,
+  // 0.8), rising towards the start, 100 at the farthest cell, -1 in the walls.
+  ASSERT_TRUE(waitFor([&] { return potential != nullptr; }, 5.0));
+  ASSERT_EQ(potential->info.width, static_cast<unsigned>(map.width));
+  ASSERT_EQ(potential->info.height, static_cast<unsigned>(map.height));
+  EXPECT_EQ(potential->header.frame_id, "map");
+  auto cell = [&](double x, double y) {  // as the planner sees the map: float resolution
+    const double res = potential->info.resolution;
+    const int ix = static_cast<int>(std::floor((x - potential->info.origin.position.x) / res));
+    const int iy = static_cast<int>(std::floor((y - potential->info.origin.position.y) / res));
+    return potential->data[static_cast<size_t>(iy) * map.width + ix];
+  };
+  EXPECT_EQ(cell(5.0, 0.8), 0);
+  EXPECT_GT(cell(1.0, 0.8), cell(3.0, 0.8));
+  EXPECT_GT(cell(3.0, 0.8), cell(4.5, 0.8));
+  EXPECT_EQ(*std::max_element(potential->data.begin(), potential->data.end()), 100);
+  EXPECT_EQ(cell(3.0, 0.02), -1);
 
   // A goal from rviz: /plan from the harmonic host.
   plan.reset();

@@ -36,6 +36,11 @@ class GlobalPlanner {
   virtual bool makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
                         Certificate& certificate) = 0;
 
+  /// The potential field of the last plan as a grid on the map's cells, scaled 0 (goal) to 100
+  /// (highest potential), -1 where undefined (obstacles, not connected), for rviz. False if the
+  /// planner has none (sampling planners) or has not planned yet.
+  virtual bool potentialGrid(wheelchair_mapping::OccupancyMap& /*grid*/) const { return false; }
+
  protected:
   GlobalPlanner() = default;
 };

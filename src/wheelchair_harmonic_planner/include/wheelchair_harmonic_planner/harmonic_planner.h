@@ -21,6 +21,8 @@ class HarmonicPlanner : public GlobalPlanner {
                   const ParameterMap& params) override;
   bool makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
                 Certificate& certificate) override;
+  /// 100 * log u / (lowest finite log u): 0 at the goal, 100 at the farthest connected cell.
+  bool potentialGrid(wheelchair_mapping::OccupancyMap& grid) const override;
 
   /// The last solved potential (log u), e.g. for publishing; null before the first plan.
   const HarmonicSolution* solution() const { return solution_ ? &*solution_ : nullptr; }
@@ -29,6 +31,7 @@ class HarmonicPlanner : public GlobalPlanner {
  private:
   std::string name_;
   std::unique_ptr<ConfigSpace> cspace_;
+  wheelchair_mapping::OccupancyMap map_geometry_;  ///< the map without its cells
   HarmonicSolverParams solver_params_;
   DescentParams descent_params_;
   std::optional<HarmonicSolution> solution_;  ///< kept as warm start for the same goal cell

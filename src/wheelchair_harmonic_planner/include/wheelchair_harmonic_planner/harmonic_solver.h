@@ -5,6 +5,7 @@
 #pragma once
 
 #include <wheelchair_harmonic_planner/config_space.h>
+#include <wheelchair_harmonic_planner/scaled_multigrid.h>
 
 #include <limits>
 #include <vector>
@@ -12,12 +13,16 @@
 namespace wheelchair_harmonic_planner {
 
 struct HarmonicSolverParams {
+  enum class Method { kMultigrid, kSor };
+  Method method = Method::kSor;  ///< kMultigrid: see scaled_multigrid.h (README: not yet faster)
   /// Convergence: max over free cells of the relative residual
   /// |sum_j w_ij u_j / sum_j w_ij - u_i| / u_i  (= |Delta log u| of one Jacobi step).
   double tolerance = 1e-5;
-  int max_iterations = 20000;   ///< SOR sweeps
-  double omega = 0.0;           ///< SOR factor; 0 = estimated from the widest free region
-  int sweeps_per_rescale = 8;   ///< linear sweeps between two re-scalings of the log field
+  int max_iterations = 20000;  ///< V-cycles (multigrid) or sweeps (SOR)
+  int cycles_per_rescale = 1;  ///< multigrid: V-cycles between two re-scalings of the log field
+  MultigridParams multigrid;
+  double omega = 0.0;           ///< SOR: factor; 0 = estimated from the widest free region
+  int sweeps_per_rescale = 8;   ///< SOR: linear sweeps between two re-scalings of the log field
   bool use_conductance = true;  ///< false: plain Laplace (the paper's equation everywhere)
 };
 
@@ -28,7 +33,7 @@ struct HarmonicSolution {
   int goal_iy = -1;
   /// log u per cell: 0 at the goal, -infinity at obstacles and cells not connected to the goal.
   std::vector<double> log_u;
-  int iterations = 0;
+  int iterations = 0;  ///< V-cycles or SOR sweeps
   double residual = std::numeric_limits<double>::infinity();
   double omega = 1.0;
   bool converged = false;
@@ -49,7 +54,7 @@ HarmonicSolution solveHarmonic(const ConfigSpace& cspace, int goal_ix, int goal_
 /// space, stopping when max |Delta phi| < tolerance. Returns phi per cell.
 struct JacobiResult {
   std::vector<double> phi;
-  int iterations = 0;
+  int iterations = 0;  ///< V-cycles or SOR sweeps
   bool converged = false;
 };
 JacobiResult solvePaperJacobi(const ConfigSpace& cspace, int goal_ix, int goal_iy, double tolerance,
