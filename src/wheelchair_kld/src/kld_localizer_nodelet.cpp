@@ -21,6 +21,7 @@
 #include <Eigen/Dense>
 #include <pluginlib/class_list_macros.hpp>
 
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -57,6 +58,8 @@ KldParams loadParams(const ros::NodeHandle& pnh) {
   pnh.param("laser_z_hit", p.measurement.z_hit, p.measurement.z_hit);
   pnh.param("laser_z_rand", p.measurement.z_rand, p.measurement.z_rand);
   pnh.param("laser_max_range", p.measurement.max_range, p.measurement.max_range);
+  pnh.param("laser_likelihood_exponent", p.measurement.likelihood_exponent,
+            p.measurement.likelihood_exponent);
   return p;
 }
 }  // namespace
@@ -172,13 +175,14 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
       laser = toPose2D(
           tf_buffer_->lookupTransform(base_frame_, msg->header.frame_id, ros::Time(0)).transform);
     } catch (const tf2::TransformException& e) {
-      NODELET_WARN_THROTTLE(2.0, "kld: scan skipped, tf missing: %s", e.what());
+      warnThrottled("tf", std::string("kld: scan skipped, tf missing: ") + e.what());
       publishStatus(std::string("tf missing: ") + e.what());
       return;
     }
     const auto result = localizer_->update(odom, fromScanMsg(*msg, laser));
     if (result == UpdateResult::kRejected) {
-      NODELET_WARN_THROTTLE(2.0, "kld: scan rejected: %s", localizer_->lastRejection().c_str());
+      warnThrottled(localizer_->lastRejection(),
+                    "kld: scan rejected: " + localizer_->lastRejection());
       publishStatus("bad scan: " + localizer_->lastRejection());
       return;
     }
@@ -220,6 +224,16 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     tf_broadcaster_.sendTransform(t);
   }
 
+  /// A warning at most every 2 s per reason (so that each kind of bad input is named).
+  void warnThrottled(const std::string& reason, const std::string& text) {
+    const ros::WallTime now = ros::WallTime::now();
+    auto it = last_warning_.find(reason);
+    if (it != last_warning_.end() && (now - it->second).toSec() < 2.0) return;
+    if (last_warning_.size() > 100) last_warning_.clear();  // reasons embed numbers
+    last_warning_[reason] = now;
+    NODELET_WARN("%s", text.c_str());
+  }
+
   /// "localized" or the reason why not (the safety supervisor's input).
   void publishStatus(const std::string& why_not) {
     std_msgs::String s;
@@ -228,7 +242,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
       if (why_not.empty())
         NODELET_INFO("kld: localized");
       else
-        NODELET_WARN("kld: not localized: %s", why_not.c_str());
+        warnThrottled("status: " + why_not, "kld: not localized: " + why_not);
       last_status_ = s.data;
     }
     status_pub_.publish(s);
@@ -244,6 +258,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   std::unique_ptr<KldLocalizer> localizer_;
   std::optional<std::pair<mrpt::math::TPose2D, mrpt::math::CMatrixDouble33>> pending_init_;
   std::string last_status_;
+  std::map<std::string, ros::WallTime> last_warning_;
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;

@@ -1,5 +1,6 @@
 #include <wheelchair_kld/measurement_model.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace wheelchair_kld {
@@ -16,9 +17,13 @@ MeasurementModel::MeasurementModel(const LocalizationMap& map, const Measurement
   outside_log_ = std::log(rand);
   const auto& dist = map_.obstacleDistance();
   field_log_.resize(dist.size());
+  // The distance transform runs between cell centres, but a beam ends where it enters the
+  // first occupied cell, half a cell before its centre: measure from that surface (otherwise
+  // the estimate is pulled half a cell towards what the laser sees).
+  const double surface = 0.5 * map_.resolution();
   for (size_t i = 0; i < dist.size(); ++i)
-    field_log_[i] =
-        static_cast<float>(std::log(params_.z_hit * gaussian(dist[i], params_.sigma_hit) + rand));
+    field_log_[i] = static_cast<float>(std::log(
+        params_.z_hit * gaussian(std::max(0.0, dist[i] - surface), params_.sigma_hit) + rand));
 }
 
 int MeasurementModel::setScan(const LaserScan& scan) {
