@@ -1,17 +1,18 @@
 #!/usr/bin/env python3
 """The headless demo of `./wheelchair demo` (the workspace must be sourced).
 
-Starts its own ROS master on a free port, brings the chair up with `rosrun` only (no roslaunch),
-renders rviz off-screen, and writes into --out:
-  overview.png, chair.png   rviz snapshots (whole map; close-up of the chair)
+Starts its own ROS master on a free port and, with `rosrun` only (no roslaunch), the simulator
+(on the CAN motor bus) and the whole chair in one process (`rosrun wheelchair_bringup
+wheelchair`); initializes the localizer (rviz's 2D Pose Estimate, or --global), chooses the
+destination like a one-switch rider (scripted /switch presses on the HMI's group scanning),
+drives there, renders rviz off-screen and writes into --out:
+  overview.png, chair.png   rviz snapshots: map, particles, plan, true trajectory; close-up
+  report.md                 what happened: presses, scan steps, time, final error, figures
   tf_tree.txt               the tf tree as seen by a listener
   logs/                     one log per process (+ ROS's own logs in logs/ros)
   summary.txt               the paragraph printed at the end
-Exit 0 on success; otherwise non-zero and one line naming the step that failed and why.
-
-The demo is a list of steps (STEPS below): the simulator drives the chair along a scripted
-torque profile in `flat`; later stages (localizer, planner,
-controller, driving to a place) are added as further steps.
+Exit 0 when the chair reached its goal; otherwise non-zero and one line naming the step that
+failed and why. The demo is a list of steps (STEPS below).
 """
 import argparse
 import math
@@ -28,14 +29,16 @@ import rosgraph
 import rospy
 import tf2_ros
 import yaml
+from geometry_msgs.msg import PoseWithCovarianceStamped
 from nav_msgs.msg import OccupancyGrid, Odometry
 from sensor_msgs.msg import LaserScan
-from std_msgs.msg import Bool
+from std_msgs.msg import Bool, Empty, String
 from tf2_msgs.msg import TFMessage
-from wheelchair_msgs.msg import WheelTorques
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-STARTUP_TIMEOUT = 20.0  # [s] for a node to show its first output
+STARTUP_TIMEOUT = 40.0  # [s] for a node to show its first output (loaded machine)
+CAN_PORTS = (47190, 47191)  # UDP ports of the demo's CAN bus (driver, motors): not the tests'
+DRIVE_TIMEOUT = 90.0  # [wall s] for the drive to the destination
 
 
 class DemoError(Exception):
@@ -148,113 +151,180 @@ def start_master(demo):
 
 
 def start_simulator(demo):
-    """The closed-loop simulator: the paper's model driven by wheel torques, the SICK laser on
-    the world's ground truth, wheel odometry, /clock at real-time speed."""
-    place = demo_pose(demo)
-    demo.facts["pose"] = place
+    """The closed-loop simulator behind the CAN motor bus: the paper's model, the SICK laser on
+    the world's ground truth, /clock at real-time speed."""
+    place = demo_pose(demo, demo.args.place)
+    demo.facts["start"] = place
     world = ROOT / "test" / "worlds" / f"{demo.args.world}.yaml"
     demo.rosrun("simulator", "wheelchair_sim", "simulator", f"_world:={world}", f"_initial_x:={place['x']}",
-                f"_initial_y:={place['y']}", f"_initial_yaw:={place['yaw']}", "_speed:=1.0",
-                "_publish_laser_tf:=false")
+                f"_initial_y:={place['y']}", f"_initial_yaw:={place['yaw']}", "_speed:=0.5",
+                "_motor_bus:=udp", f"_udp_local_port:={CAN_PORTS[1]}", f"_udp_remote_port:={CAN_PORTS[0]}")
     scans = []
     subscriber = rospy.Subscriber("/scan", LaserScan, scans.append, queue_size=1)
     scan = demo.wait_for("a laser scan on /scan", lambda: scans[-1] if scans else None, ["simulator"])
     subscriber.unregister()
     return (f"the simulator in {world.name} with a {len(scan.ranges)}-beam laser over "
-            f"{math.degrees(scan.angle_max - scan.angle_min):.0f} deg and /clock")
+            f"{math.degrees(scan.angle_max - scan.angle_min):.0f} deg, motors on CAN-over-UDP")
 
 
-def drive_torque_profile(demo):
-    """A scripted torque profile, as the controller would send it: accelerate, curve, brake."""
-    publisher = rospy.Publisher("/wheel_torques", WheelTorques, queue_size=1)
-    truths, collisions = [], []
-    subscribers = [rospy.Subscriber("/sim/ground_truth", Odometry, truths.append, queue_size=1),
-                   rospy.Subscriber("/sim/collision", Bool, collisions.append, queue_size=1)]
-    demo.wait_for("/sim/ground_truth", lambda: truths, ["simulator"])
-    start = truths[-1].pose.pose.position
-    # s, right, left [N m], brake: free ahead of living_centre up to x = 6 m (checked on the grid)
-    profile = [(2.0, 5.0, 5.0, False), (2.0, 5.0, 4.0, False), (2.0, 0.0, 0.0, True)]
-    for seconds, right, left, brake in profile:
-        end = time.monotonic() + seconds
-        while time.monotonic() < end:
-            demo.check_alive("simulator", dict(demo.processes)["simulator"])
-            message = WheelTorques(right=right, left=left, brake=brake)
-            message.header.stamp = rospy.Time.now()
-            publisher.publish(message)
-            time.sleep(0.02)
-    for subscriber in subscribers:
-        subscriber.unregister()
-    if any(c.data for c in collisions):
-        raise DemoError("the chair collided with the world during the torque profile")
-    end_pose = truths[-1].pose.pose.position
-    moved = math.hypot(end_pose.x - start.x, end_pose.y - start.y)
-    if moved < 0.2:
-        raise DemoError(f"the chair moved only {moved:.2f} m under the torque profile")
-    demo.facts["pose"] = dict(demo.facts["pose"], x=end_pose.x, y=end_pose.y)
-    return (f"a 6 s torque profile (accelerate, curve, brake) moved the chair {moved:.2f} m "
-            f"without collision")
-
-
-def start_map_server(demo):
-    """The world's map on a latched /map."""
-    world = ROOT / "test" / "worlds" / f"{demo.args.world}.yaml"
-    if not world.is_file():
-        raise DemoError(f"no world file {world}")
-    demo.rosrun("map_server", "wheelchair_mapping", "map_server", str(world))
+def start_chair(demo):
+    """The whole chair in one process: map server, description, localizer, planner, controller,
+    base driver (CAN to the simulator), safety supervisor, HMI (chair_sim.yaml)."""
+    world = ROOT / "test" / "worlds" / f"{demo.args.world}"
+    demo.rosrun("wheelchair", "wheelchair_bringup", "wheelchair",
+                f"_base_driver/udp_local_port:={CAN_PORTS[0]}", f"_base_driver/udp_remote_port:={CAN_PORTS[1]}",
+                f"_map_server/map_file:={world}.yaml", f"_hmi/places_file:={world}.places.yaml",
+                f"_hmi/scan_interval:={demo.args.scan_interval}")
     received = []
     subscriber = rospy.Subscriber("/map", OccupancyGrid, received.append, queue_size=1)
-    grid = demo.wait_for("a map on /map", lambda: received[-1] if received else None, ["map_server"])
+    grid = demo.wait_for("a map on /map", lambda: received[-1] if received else None, ["wheelchair"])
     subscriber.unregister()
-    info = grid.info
     demo.facts["map"] = grid
-    width, height = info.width * info.resolution, info.height * info.resolution
-    return (f"map server publishing {world.name} on /map ({width:.1f} m x {height:.1f} m, "
-            f"{info.resolution * 100:.0f} cm cells)")
+    demo.wait_for("tf odom -> base_link from the base driver", lambda: demo.lookup("odom", "base_link"),
+                  ["wheelchair"])
+    demo.wait_for("tf base_link -> laser", lambda: demo.lookup("base_link", "laser"), ["wheelchair"])
+    for service in ("/go_to_place", "/planner/make_plan", "/global_localization"):
+        demo.wait_for(f"service {service}", lambda: service_up(service), ["wheelchair"])
+    demo.watch = Watch()
+    info = grid.info
+    return (f"the chair (one process: map server, description, KLD localizer, harmonic planner, "
+            f"controller, base driver, supervisor, HMI) with a {info.width * info.resolution:.1f} m x "
+            f"{info.height * info.resolution:.1f} m map")
 
 
-def start_description(demo):
-    """The chair's URDF on /robot_description and its static tf (base_link -> laser, wheels...)."""
-    demo.rosrun("description_publisher", "wheelchair_description", "description_publisher")
-    demo.wait_for("/robot_description", lambda: rospy.has_param("/robot_description"), ["description_publisher"])
-    demo.wait_for("tf base_link -> laser", lambda: demo.lookup("base_link", "laser"), ["description_publisher"])
-    links = rospy.get_param("/robot_description").count("<link ")
-    return f"the chair model ({links} links) on /robot_description with its static tf"
+def service_up(name):
+    try:
+        rospy.wait_for_service(name, timeout=0.1)
+        return True
+    except rospy.ROSException:
+        return False
 
 
-def demo_pose(demo):
-    """The chair's pose for the demo: a named place of the world (x, y, yaw)."""
+class Watch:
+    """What the demo records while it runs: truth, announcements, controller and safety."""
+    def __init__(self):
+        self.truth = []  # (t, x, y, yaw)
+        self.announcements = []  # (t, text)
+        self.controller = []
+        self.safety = []
+        self.localized = ""
+        self.collided = False
+
+        def append(field):
+            return lambda msg: getattr(self, field).append((rospy.get_time(), msg.data))
+
+        def on_truth(msg):
+            p = msg.pose.pose
+            self.truth.append((msg.header.stamp.to_sec(), p.position.x, p.position.y,
+                               2 * math.atan2(p.orientation.z, p.orientation.w)))
+
+        self.subscribers = [
+            rospy.Subscriber("/sim/ground_truth", Odometry, on_truth, queue_size=50),
+            rospy.Subscriber("/hmi/announce", String, append("announcements"), queue_size=50),
+            rospy.Subscriber("/controller/status", String, append("controller"), queue_size=20),
+            rospy.Subscriber("/safety/status", String, append("safety"), queue_size=20),
+            rospy.Subscriber("/kld/localized", String, lambda m: setattr(self, "localized", m.data)),
+            rospy.Subscriber("/sim/collision", Bool,
+                             lambda m: setattr(self, "collided", self.collided or m.data)),
+        ]
+
+    def said(self, field, prefix, since):
+        return any(t >= since and text.startswith(prefix) for t, text in getattr(self, field))
+
+
+def initialize(demo):
+    """Localization: rviz's 2D Pose Estimate at the start (default) or global localization."""
+    place, watch = demo.facts["start"], demo.watch
+    if demo.args.global_localization:
+        # std_srvs has no Python bindings on Debian unless python3-std-srvs is installed
+        subprocess.run(["rosservice", "call", "/global_localization"], check=True, capture_output=True,
+                       timeout=30)
+        how = "global localization (particles over the whole map)"
+    else:
+        msg = PoseWithCovarianceStamped()
+        msg.header.frame_id = "map"
+        msg.header.stamp = rospy.Time.now()
+        msg.pose.pose.position.x, msg.pose.pose.position.y = place["x"], place["y"]
+        msg.pose.pose.orientation.z = math.sin(place["yaw"] / 2)
+        msg.pose.pose.orientation.w = math.cos(place["yaw"] / 2)
+        msg.pose.covariance[0] = msg.pose.covariance[7] = 0.1 ** 2
+        msg.pose.covariance[35] = 0.1 ** 2
+        publisher = rospy.Publisher("/initialpose", PoseWithCovarianceStamped, queue_size=1, latch=True)
+        demo.facts["initialpose_publisher"] = publisher  # keep it (latched) alive
+        publisher.publish(msg)
+        how = f"an initial pose at '{place['name']}' (10 cm, 6 deg std)"
+    demo.wait_for("the localizer to report 'localized'", lambda: watch.localized == "localized",
+                  ["wheelchair"], timeout=60.0)
+    time.sleep(1.5)  # two map -> odom stamps before a goal: the planner looks up the latest pose
+    demo.facts["localized_how"] = how
+    return f"localized from {how}"
+
+
+def choose_destination(demo):
+    """The one-switch rider: presses /switch when the destination's room, then the place is
+    announced, then confirms; counts presses and scan steps."""
+    goal, watch = demo_pose(demo, demo.args.goal), demo.watch
+    demo.facts["goal"] = goal
+    switch = rospy.Publisher("/switch", Empty, queue_size=5)
+    demo.wait_for("the HMI to listen to /switch", lambda: switch.get_num_connections() > 0, ["wheelchair"])
+    presses, steps, seen = 0, 0, len(watch.announcements)
+    deadline = time.monotonic() + 60.0
+    while not watch.said("announcements", "Going to " + goal["name"], 0.0):
+        demo.check_alive("wheelchair", dict(demo.processes)["wheelchair"])
+        if time.monotonic() > deadline:
+            raise DemoError(f"the scanner never offered {goal['name']} ({presses} presses)")
+        fresh = watch.announcements[seen:]
+        seen += len(fresh)
+        for _, text in fresh:
+            highlight = text.endswith("?") and not text.startswith("Go to")
+            steps += highlight
+            if (text.startswith("Go to " + goal["name"]) or text.endswith(goal["room"] + "?")
+                    or text.endswith(goal["name"] + "?")):
+                switch.publish(Empty())
+                presses += 1
+        time.sleep(0.02)
+    demo.facts["presses"], demo.facts["steps"] = presses, steps
+    demo.facts["go_time"] = rospy.get_time()
+    return (f"'{goal['name']}' ({goal['room']}) chosen with {presses} switch presses after "
+            f"{steps} scan steps")
+
+
+def drive(demo):
+    """The chair plans and drives; ends at the controller's goal_reached (or a stop)."""
+    watch, goal, since = demo.watch, demo.facts["goal"], demo.facts["go_time"]
+    ended = demo.wait_for(f"the drive to {goal['name']}", lambda: (
+        watch.said("controller", "goal_reached", since) or watch.said("controller", "aborted", since)
+        or watch.collided), ["wheelchair", "simulator"], timeout=DRIVE_TIMEOUT)
+    time.sleep(1.0)  # come to rest
+    t, x, y, yaw = watch.truth[-1]
+    error = math.hypot(x - goal["x"], y - goal["y"])
+    heading = abs(math.degrees(math.remainder(yaw - goal["yaw"], 2 * math.pi)))
+    # Judged by the simulator's truth (the controller may abort a few mm off its own tolerance).
+    reached = error <= 0.15 and heading <= 10.0 and not watch.collided
+    points = [(px, py) for tt, px, py, _ in watch.truth if tt >= since]
+    length = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(points, points[1:]))
+    demo.facts.update(reached=reached, error=error, heading=heading, length=length,
+                      drive_time=t - since, end=(x, y, yaw), ended=ended)
+    stops = [text for tt, text in watch.safety if tt >= since and text != "safe"]
+    demo.facts["stops"] = stops
+    verdict = "reached" if reached else "NOT reached"
+    text = (f"{goal['name']} {verdict}: {length:.2f} m driven in {t - since:.1f} s (simulated), final "
+            f"error {error * 100:.1f} cm and {heading:.1f} deg")
+    if not reached:
+        last = [s for tt, s in watch.controller if tt >= since][-1:]
+        raise DemoError(f"{text}; controller {last}, safety stops {stops[:2]}, collided {watch.collided}")
+    return text
+
+
+def demo_pose(demo, name):
+    """A named place of the world: {name, room, x, y, yaw}."""
     places = ROOT / "test" / "worlds" / f"{demo.args.world}.places.yaml"
     listed = yaml.safe_load(places.read_text())["places"]
     for place in listed:
-        if place["name"] == demo.args.place:
+        if place["name"] == name:
             return place
-    raise DemoError(f"no place named '{demo.args.place}' in {places} (there are: "
+    raise DemoError(f"no place named '{name}' in {places} (there are: "
                     f"{', '.join(p['name'] for p in listed)})")
-
-
-def place_chair(demo):
-    """map -> odom -> base_link: stand-ins until the localizer and the base driver (or the
-    simulator) publish them; left alone if something already does."""
-    place = demo.facts.get("pose") or demo_pose(demo)
-    demo.facts["pose"] = place
-    time.sleep(1.0)  # let tf arrive from anyone who already publishes it
-    started = []
-    simulated_odometry = demo.lookup("odom", "base_link") is not None  # starts at the identity
-    if demo.lookup("map", "odom") is None:
-        at = [place["x"], place["y"], 0, place["yaw"]] if simulated_odometry else [0, 0, 0, 0]
-        demo.rosrun("tf_map_odom", "tf2_ros", "static_transform_publisher", *map(str, at), "0", "0",
-                    "map", "odom", "__name:=tf_map_odom")
-        started.append("map->odom (the start pose)" if simulated_odometry else "map->odom (identity)")
-    if demo.lookup("odom", "base_link") is None:
-        demo.rosrun("tf_odom_base_link", "tf2_ros", "static_transform_publisher", str(place["x"]),
-                    str(place["y"]), "0", str(place["yaw"]), "0", "0", "odom", "base_link",
-                    "__name:=tf_odom_base_link")
-        started.append("odom->base_link")
-    demo.wait_for("tf map -> laser", lambda: demo.lookup("map", "laser"),
-                  ["tf_map_odom", "tf_odom_base_link"])
-    how = f"static stand-ins for {' and '.join(started)}" if started else "tf from the running nodes"
-    return (f"the chair at '{place['name']}' ({place['room']}: x {place['x']:.2f} m, y {place['y']:.2f} m, "
-            f"yaw {math.degrees(place['yaw']):.0f} deg) via {how}")
 
 
 def snapshot(demo, name, view):
@@ -277,15 +347,39 @@ RENDER_AREA = (900, 700)  # [px] rviz's render area in a 1280 x 800 screen with 
 
 
 def take_snapshots(demo):
-    """rviz off-screen: the whole map, and a close-up of the chair."""
+    """rviz off-screen: the whole map (particles, plan, true trajectory), and the chair at its goal."""
     info = demo.facts["map"].info
     width, height = info.width * info.resolution, info.height * info.resolution
     fit = 0.95 * min(RENDER_AREA[0] / width, RENDER_AREA[1] / height)
     overview = (info.origin.position.x + width / 2, info.origin.position.y + height / 2, fit)
-    pose = demo.facts["pose"]
-    names = [snapshot(demo, "overview", overview), snapshot(demo, "chair", (pose["x"], pose["y"], 200.0))]
+    x, y, _ = demo.facts["end"]
+    names = [snapshot(demo, "overview", overview), snapshot(demo, "chair", (x, y, 150.0))]
     seconds = demo.facts["snapshot_seconds"]
     return f"rviz snapshots {' and '.join(names)} ({sum(seconds) / len(seconds):.0f} s each)"
+
+
+def write_report(demo):
+    """report.md: the run in a few lines and the snapshots."""
+    f, start, goal = demo.facts, demo.facts["start"], demo.facts["goal"]
+    lines = [
+        f"# Demo: {start['name']} -> {goal['name']} in `{demo.args.world}`",
+        "",
+        f"- Localization: {f['localized_how']}",
+        f"- Destination chosen with one switch (group scanning, {demo.args.scan_interval:.1f} s per "
+        f"highlight): {f['presses']} presses, {f['steps']} scan steps",
+        f"- Drive: {f['length']:.2f} m in {f['drive_time']:.1f} s simulated time; "
+        f"{'reached' if f['reached'] else 'NOT reached'}",
+        f"- Final error (simulator truth vs the place): {f['error'] * 100:.1f} cm, {f['heading']:.1f} deg",
+        f"- Safety stops during the drive: {', '.join(f['stops']) if f['stops'] else 'none'}",
+        f"- Collision: {'yes' if demo.watch.collided else 'no'}",
+        "",
+        "![overview](overview.png)",
+        "",
+        "![chair at the goal](chair.png)",
+        "",
+    ]
+    (demo.out / "report.md").write_text("\n".join(lines))
+    return "report.md"
 
 
 def frames_with_two_parents(listen=2.0):
@@ -347,12 +441,13 @@ def dump_tf_tree(demo):
 STEPS = [
     ("ROS master", start_master),
     ("simulator", start_simulator),
-    ("map server", start_map_server),
-    ("chair description", start_description),
-    ("chair pose", place_chair),
-    ("torque profile", drive_torque_profile),
+    ("chair", start_chair),
+    ("localization", initialize),
+    ("destination", choose_destination),
+    ("drive", drive),
     ("rviz snapshots", take_snapshots),
     ("tf tree", dump_tf_tree),
+    ("report", write_report),
 ]
 
 
@@ -377,6 +472,12 @@ def main():
     parser.add_argument("--world", default="flat", help="world under test/worlds (default: flat)")
     parser.add_argument("--place", default="living_centre",
                         help="named place where the chair starts (default: living_centre)")
+    parser.add_argument("--goal", default="kitchen_door",
+                        help="named place the rider chooses (default: kitchen_door)")
+    parser.add_argument("--global", dest="global_localization", action="store_true",
+                        help="start with global localization instead of an initial pose")
+    parser.add_argument("--scan-interval", type=float, default=1.0,
+                        help="one-switch scanning: seconds per highlight (default 1)")
     parser.add_argument("--snapshot-seconds", type=float, default=4.0, help="time rviz gets to fill its displays")
     args = parser.parse_args()
     if subprocess.run(["rospack", "find", "wheelchair_bringup"], capture_output=True).returncode != 0:
@@ -407,7 +508,7 @@ def main():
     summary = (f"Demo ({time.monotonic() - started:.0f} s, world '{args.world}'): started "
                + "; ".join(result for _, result in done)
                + f". Every node ran under rosrun (no roslaunch) and all processes were stopped again; "
-               f"the outputs are in {demo.out} (PNG snapshots, tf_tree.txt, logs/).")
+               f"the outputs are in {demo.out} (report.md, PNG snapshots, tf_tree.txt, logs/).")
     (demo.out / "summary.txt").write_text(summary + "\n")
     print(summary)
     return 0
