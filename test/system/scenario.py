@@ -199,6 +199,18 @@ class Scenario:
             points = [(x, y) for t, x, y in self.truth_path if t >= since]
         return sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(points, points[1:]))
 
+    def start_driving(self, test, start, name, metres):
+        """Ready, localized at `start`, on the way to place `name` and `metres` driven; returns
+        the simulated time the goal was sent. Fails `test` (a TestCase) otherwise."""
+        test.assertEqual(self.wait_ready(), "")
+        test.assertTrue(self.initialize(*start), "not localized: " + self.describe())
+        accepted, message = self.go_to_place(name)
+        test.assertTrue(accepted, message)
+        t_go = rospy.get_time()
+        test.assertTrue(self.wait(lambda: self.travelled(t_go) > metres, 60.0),
+                        "the chair did not start: " + self.describe(t_go))
+        return t_go
+
     def drive_to_place(self, name, wall_timeout):
         """go_to_place + wait for the controller's goal_reached (or a stop/abort)."""
         since = rospy.get_time()

@@ -19,13 +19,7 @@ GOAL = "kitchen_door"
 class LaserDropout(unittest.TestCase):
     def test_laser_dropout_stops_with_reason(self):
         s = Scenario("test_laser_dropout")
-        self.assertEqual(s.wait_ready(), "")
-        self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
-        accepted, message = s.go_to_place(GOAL)
-        self.assertTrue(accepted, message)
-        t_go = rospy.get_time()
-        self.assertTrue(s.wait(lambda: s.travelled(t_go) > 1.0, 60.0),
-                        "the chair did not start: " + s.describe(t_go))
+        s.start_driving(self, START, GOAL, 1.0)
         laser = rospy.ServiceProxy("/sim/enable_laser", EnableLaser)
         t_off = rospy.get_time()
         self.assertTrue(laser(False).success)

@@ -35,13 +35,7 @@ def point_ahead(plan, x, y, distance):
 class Person(unittest.TestCase):
     def test_person_in_front_stops_before_contact(self):
         s = Scenario("test_person")
-        self.assertEqual(s.wait_ready(), "")
-        self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
-        accepted, message = s.go_to_place(GOAL)
-        self.assertTrue(accepted, message)
-        t_go = rospy.get_time()
-        self.assertTrue(s.wait(lambda: s.travelled(t_go) > 0.8, 60.0),
-                        "the chair did not start: " + s.describe(t_go))
+        s.start_driving(self, START, GOAL, 0.8)
         plan = s.plans[-1]
         _, x, y, _, v, _ = s.truth
         person = point_ahead(plan, x, y, AHEAD)
