@@ -22,6 +22,7 @@
 #include <std_msgs/String.h>
 #include <tf2/utils.h>
 #include <tf2_ros/static_transform_broadcaster.h>
+#include <wheelchair_msgs/WheelTorques.h>
 #include <wheelchair_sim/SetPose.h>
 
 #include <algorithm>
@@ -41,7 +42,7 @@ namespace {
 constexpr double kComfortWindow = 0.1;   // [s] differences for acceleration and jerk
 constexpr double kAccelLimit = 0.5;      // [m/s^2] the controller's comfort limits (defaults)
 constexpr double kJerkLimit = 1.0;       // [m/s^3]
-constexpr double kJerkSmoothing = 0.5;  // [s] moving average of the acceleration for the jerk
+constexpr double kJerkSmoothing = 0.5;   // [s] moving average of the acceleration for the jerk
 constexpr double kSettleDistance = 1.5;  // [m] Figure 6: MSE after the chair travelled this
 
 struct TruthSample {
@@ -58,7 +59,9 @@ struct RunResult {
   double body_deviation_max = 0.0, doorway_deviation_max = 0.0;
   double max_accel = 0.0, max_jerk = 0.0, max_speed = 0.0;
   double max_accel_time = 0.0, max_jerk_time = 0.0;
-  double max_jerk_raw = 0.0;  // from the unsmoothed 0.1 s accelerations (reported only)  // [s] after the path was sent
+  double max_jerk_raw = 0.0;     // from the unsmoothed 0.1 s accelerations (reported only)
+  double max_command_gap = 0.0;  // [s, sim] longest pause between /wheel_torques messages  // [s]
+                                 // after the path was sent
   int samples = 0;
 };
 
@@ -84,6 +87,7 @@ class SimHarness {
     ref_sub_ = nh.subscribe("controller/reference", 200, &SimHarness::onReference, this);
     status_sub_ = nh.subscribe("controller/status", 20, &SimHarness::onStatus, this);
     collision_sub_ = nh.subscribe("sim/collision", 5, &SimHarness::onCollision, this);
+    torque_sub_ = nh.subscribe("wheel_torques", 200, &SimHarness::onTorques, this);
     path_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
     reset_ = nh.serviceClient<wheelchair_sim::SetPose>("sim/reset");
   }
@@ -126,6 +130,8 @@ class SimHarness {
       truth_.clear();
       refs_.clear();
       record_from_ = t0.toSec();
+      last_command_ = 0.0;
+      max_command_gap_ = 0.0;
       statuses_.clear();
       collision_ = false;
     }
@@ -162,6 +168,7 @@ class SimHarness {
     std::lock_guard<std::mutex> lock(mutex_);
     if (r.final_status.empty()) r.final_status = statuses_.empty() ? "none" : statuses_.back();
     r.collision = collision_;
+    r.max_command_gap = max_command_gap_;
     evaluate(path, doorways, r);
     return r;
   }
@@ -186,6 +193,13 @@ class SimHarness {
     std::lock_guard<std::mutex> lock(mutex_);
     status_ = m->data;
     statuses_.push_back(m->data);
+  }
+  void onTorques(const wheelchair_msgs::WheelTorques::ConstPtr& m) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const double t = m->header.stamp.toSec();
+    if (t < record_from_) return;
+    if (last_command_ > 0.0) max_command_gap_ = std::max(max_command_gap_, t - last_command_);
+    last_command_ = t;
   }
   void onCollision(const std_msgs::Bool::ConstPtr& m) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -293,7 +307,7 @@ class SimHarness {
   }
 
   wheelchair_description::ChairParams chair_;
-  ros::Subscriber truth_sub_, ref_sub_, status_sub_, collision_sub_;
+  ros::Subscriber truth_sub_, ref_sub_, status_sub_, collision_sub_, torque_sub_;
   ros::Publisher path_pub_;
   ros::ServiceClient reset_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
@@ -302,7 +316,7 @@ class SimHarness {
   std::vector<std::string> statuses_;
   std::string status_;
   bool collision_ = false;
-  double record_from_ = 0.0;
+  double record_from_ = 0.0, last_command_ = 0.0, max_command_gap_ = 0.0;
 };
 
 void expectComfortable(const RunResult& r, const std::string& name) {
@@ -315,11 +329,32 @@ void print(const std::string& name, const RunResult& r) {
   std::printf(
       "%-18s %-14s MSEre %6.3f cm^2 (after %.1f m: %6.3f)  max |e| %5.3f m  body dev %5.3f m "
       "(doorway %5.3f)  "
-      "accel %4.2f m/s^2 (t %.1f s)  jerk %4.2f m/s^3 (t %.1f s, unsmoothed %4.2f)  converged after %4.2f m  "
-      "(%d samples)\n",
+      "accel %4.2f m/s^2 (t %.1f s)  jerk %4.2f m/s^3 (t %.1f s, unsmoothed %4.2f)  converged "
+      "after %4.2f m  "
+      "(%d samples, longest command gap %.3f s)\n",
       name.c_str(), r.final_status.c_str(), r.mse_cm2, kSettleDistance, r.mse_after_cm2,
       r.max_error, r.body_deviation_max, r.doorway_deviation_max, r.max_accel, r.max_accel_time,
-      r.max_jerk, r.max_jerk_time, r.max_jerk_raw, r.convergence_distance, r.samples);
+      r.max_jerk, r.max_jerk_time, r.max_jerk_raw, r.convergence_distance, r.samples,
+      r.max_command_gap);
+}
+
+constexpr double kStarved = 0.1;  // [s, sim] a command gap this long: the machine starved us
+
+/// Drives the path; a run in which the controller was starved of CPU (a 50 Hz command missing
+/// for kStarved of simulated time: the simulator's time runs on regardless) says nothing about
+/// the controller and is driven again, at most twice (all runs are printed).
+RunResult driveUndisturbed(SimHarness& sim, const std::string& name,
+                           const std::vector<wc::Pose2>& path, const wc::Pose2& start,
+                           const std::vector<Eigen::Vector2d>& doorways = {}) {
+  RunResult r = sim.drive(path, start, doorways);
+  print(name, r);
+  for (int retry = 0; retry < 2 && r.max_command_gap > kStarved; ++retry) {
+    std::printf("%s: controller starved (%.3f s without a command): driven again\n", name.c_str(),
+                r.max_command_gap);
+    r = sim.drive(path, start, doorways);
+    print(name, r);
+  }
+  return r;
 }
 
 }  // namespace
@@ -337,8 +372,7 @@ TEST(ControllerInTheSimulator, Scenario) {
     // of the chair; shifted 1 m back so the 1.1 m chair fits the room's x in [-2, 8].
     std::vector<wc::Pose2> path = wc::cosinePath(0.3, 4.0, 8.0);
     for (wc::Pose2& p : path) p.x() -= 1.0;
-    const RunResult r = sim.drive(path, {-1.0, 0.0, 0.0});
-    print("figure6", r);
+    const RunResult r = driveUndisturbed(sim, "figure6", path, {-1.0, 0.0, 0.0});
     EXPECT_EQ(r.final_status, "goal_reached");
     EXPECT_FALSE(r.collision);
     EXPECT_GT(r.samples, 100);
@@ -350,8 +384,7 @@ TEST(ControllerInTheSimulator, Scenario) {
   } else if (scenario == "table2") {
     std::vector<double> mse;
     for (const wc::NamedPath& p : wc::flatTestPaths()) {
-      const RunResult r = sim.drive(p.poses, p.poses.front());
-      print(p.name, r);
+      const RunResult r = driveUndisturbed(sim, p.name, p.poses, p.poses.front());
       EXPECT_EQ(r.final_status, "goal_reached") << p.name;
       EXPECT_FALSE(r.collision) << p.name;
       EXPECT_GT(r.samples, 100) << p.name;
@@ -373,8 +406,7 @@ TEST(ControllerInTheSimulator, Scenario) {
     const std::vector<Eigen::Vector2d> doors = {{5.10, 6.05}, {6.05, 4.85}};
     for (const wc::NamedPath& p : wc::flatTestPaths()) {
       if (p.name != "living_to_hallway" && p.name != "living_to_kitchen") continue;
-      const RunResult r = sim.drive(p.poses, p.poses.front(), doors);
-      print(p.name, r);
+      const RunResult r = driveUndisturbed(sim, p.name, p.poses, p.poses.front(), doors);
       EXPECT_EQ(r.final_status, "goal_reached") << p.name;
       EXPECT_FALSE(r.collision) << p.name;
       EXPECT_LT(r.doorway_deviation_max, 0.05) << p.name << ": body off the path in the doorway";
