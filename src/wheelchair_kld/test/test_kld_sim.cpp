@@ -75,6 +75,12 @@ class KldSim : public ::testing::Test {
     init_pub_.publish(init);
   }
 
+  void TearDown() override {  // no callback may run into a destroyed fixture
+    for (auto* sub : {&truth_sub_, &pose_sub_, &status_sub_, &log_sub_, &scan_sub_})
+      sub->shutdown();
+    torques(0, 0);
+  }
+
   /// Spins (sim time runs in the simulator) until `done` or `wall_timeout` seconds.
   bool waitFor(const std::function<bool()>& done, double wall_timeout) {
     const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(wall_timeout);
@@ -212,7 +218,8 @@ class KldSim : public ::testing::Test {
   std::vector<Stamped> poses_;
   std::string status_;
   std::vector<std::string> statuses_, warnings_;
-  std::function<void(sensor_msgs::LaserScan&)> corrupt_;
+  std::function<void(sensor_msgs::LaserScan&)> corrupt_;  ///< called under mutex_
+  int relayed_ = 0;
   ros::Subscriber truth_sub_, pose_sub_, status_sub_, log_sub_, scan_sub_;
   ros::Publisher torque_pub_, map_pub_, init_pub_, relay_pub_;
 };
@@ -281,11 +288,10 @@ TEST_F(KldSim, NoticesAndRecoversFromKidnapping) {
 TEST_F(KldSim, SurvivesBadInputWithoutAJump) {
   ASSERT_TRUE(relay_);
   ASSERT_TRUE(waitFor([&] { return statusNow() == "localized"; }, 20.0)) << statusNow();
-  int scans = 0;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    corrupt_ = [&scans](sensor_msgs::LaserScan& s) {
-      switch (scans++ % 8) {
+    corrupt_ = [this](sensor_msgs::LaserScan& s) {
+      switch (relayed_++ % 8) {
         case 1:
           s.ranges[100] = std::numeric_limits<float>::quiet_NaN();
           break;
@@ -319,10 +325,14 @@ TEST_F(KldSim, SurvivesBadInputWithoutAJump) {
       padded.data[(y + pad) * padded.info.width + x + pad] = map_.data[y * map_.info.width + x];
   map_pub_.publish(padded);
   ASSERT_TRUE(driveTo(kLivingRoomLoop[2]));
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    corrupt_ = nullptr;
+  }
   const auto errors = poseErrors(from);
   double worst = 0;
   for (const auto& e : errors) worst = std::max(worst, e.xy);
-  std::cout << "bad input: " << scans << " scans relayed, " << errors.size()
+  std::cout << "bad input: " << relayed_ << " scans relayed, " << errors.size()
             << " poses, worst error " << 100 * worst << " cm\n";
   EXPECT_GT(errors.size(), 20u);
   EXPECT_LT(worst, 0.15) << "the estimate jumped";
