@@ -95,6 +95,17 @@ TEST(Linearization, DynamicsDoNotDependOnPose) {
       1e-12);
 }
 
+TEST(Saturation, NeverExceedsTheLimitByRounding) {
+  // The base driver rejects |tau| > max_torque: scaling must not overshoot by one ulp.
+  for (double big = 50.0 + 1e-3; big < 5000.0; big *= 1.37) {
+    for (double other : {-big, -0.3 * big, 0.7 * big, big}) {
+      const wc::SaturatedTorque s = wc::saturateTorque(Eigen::Vector2d(big, other), 50.0);
+      EXPECT_LE(s.torque.cwiseAbs().maxCoeff(), 50.0) << big << " " << other;
+      EXPECT_NEAR(s.torque(1) / s.torque(0), other / big, 1e-12);
+    }
+  }
+}
+
 TEST(Saturation, ScalesBothWheelsAndKeepsDirection) {
   const Eigen::Vector2d tau(80.0, 20.0);
   const wc::SaturatedTorque s = wc::saturateTorque(tau, 50.0);
