@@ -8,7 +8,7 @@
 #      set-up script, /etc/default/wheelchair (a conffile), the docs;
 #   3. Depends: the shared libraries every ELF file needs (dpkg-shlibdeps = ldd + the
 #      libraries' shlibs/symbols files, with minimum versions) + the runtime tools listed in
-#      deploy/runtime-depends.txt (each must be in tools/debian-packages.txt);
+#      deploy/runtime-depends.txt (each in tools/debian-packages.txt or known to apt);
 #   4. dpkg-deb --build --root-owner-group.
 # Installs with `apt-get install ./out/package/wheelchair_*.deb`; test: deploy/test-install.
 set -euo pipefail
@@ -77,7 +77,8 @@ depends() {
   [ -n "$shlibs" ] || { cat "$OUT/shlibdeps.log" >&2; die "dpkg-shlibdeps found no dependency"; }
   local tool tools=()
   while read -r tool; do
-    debian_packages_has "$tool" || die "deploy/runtime-depends.txt: $tool is not in tools/debian-packages.txt"
+    debian_packages_has "$tool" || apt-cache show "$tool" >/dev/null 2>&1 ||
+      die "deploy/runtime-depends.txt: $tool is neither in tools/debian-packages.txt nor known to apt"
     tools+=("$tool")
   done < <(grep -v -e '^#' -e '^[[:space:]]*$' "$ROOT/deploy/runtime-depends.txt")
   local IFS=,
