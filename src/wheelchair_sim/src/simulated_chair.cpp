@@ -29,7 +29,8 @@ SensorOutputs SimulatedChair::advance(double dt) {
   SensorOutputs out;
   out.collision_started = sim_.collided() && !was_collided;
   out.odometry_due = odom_schedule_.due(sim_.time());
-  if (laser_ && scan_schedule_.due(sim_.time())) out.scan = laser_->scan(sim_.pose(), sim_.obstacles().presentAt(sim_.time()));
+  if (laser_ && scan_schedule_.due(sim_.time()))
+    out.scan = laser_->scan(sim_.pose(), sim_.obstacles().presentAt(sim_.time()));
   return out;
 }
 
