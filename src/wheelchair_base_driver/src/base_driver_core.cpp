@@ -7,6 +7,10 @@ namespace wheelchair_base_driver {
 
 using protocol::ControllerState;
 
+namespace {
+constexpr double kScheduleSlack = 1e-3;  ///< [s] timer jitter tolerated by periodic frames
+}  // namespace
+
 void validate(const DriverConfig& c) {
   const auto positive = [](double v, const char* name) {
     if (!(std::isfinite(v) && v > 0)) {
@@ -189,8 +193,11 @@ void BaseDriverCore::update(double now, bool force_send) {
     force_send = true;  // a change of state goes on the bus at once
   }
   state_ = next;
-  if (force_send || now - last_command_time_ >= config_.command_period) sendCommand(now);
-  if (now - last_heartbeat_sent_ >= config_.heartbeat_period) sendHeartbeat(now);
+  // A periodic frame is due up to kScheduleSlack early: spun by a timer at the command rate,
+  // a tick a little early must not skip a period (the frames would go out at half the rate).
+  if (force_send || now - last_command_time_ >= config_.command_period - kScheduleSlack)
+    sendCommand(now);
+  if (now - last_heartbeat_sent_ >= config_.heartbeat_period - kScheduleSlack) sendHeartbeat(now);
 }
 
 void BaseDriverCore::sendCommand(double now) {

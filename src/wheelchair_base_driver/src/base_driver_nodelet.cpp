@@ -4,6 +4,7 @@
 #include <wheelchair_base_driver/transport_factory.h>
 #include <wheelchair_base_driver/udp_transport.h>
 #include <wheelchair_description/chair_params.h>
+#include <wheelchair_description/package_paths.h>
 
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -36,7 +37,7 @@ void BaseDriverNodelet::onInit() {
   ros::NodeHandle& pnh = getPrivateNodeHandle();
 
   const std::string chair_file =
-      pnh.param<std::string>("chair_params", wheelchair_description::defaultChairParamsPath());
+      pnh.param<std::string>("chair_params", wheelchair_description::chairParamsPathFromRos());
   const wheelchair_description::ChairParams chair =
       wheelchair_description::loadChairParams(chair_file);
   DriverConfig config;
@@ -95,7 +96,9 @@ void BaseDriverNodelet::onInit() {
   estop_sub_ = nh.subscribe("estop", 10, &BaseDriverNodelet::onEstopTopic, this);
   estop_srv_ = pnh.advertiseService("estop", &BaseDriverNodelet::onEstopService, this);
   clear_srv_ = pnh.advertiseService("clear_estop", &BaseDriverNodelet::onClearEstopService, this);
-  timer_ = nh.createTimer(ros::Duration(1.0 / pnh.param("spin_rate", 500.0)),
+  // The bus is polled, the watchdogs checked and commands sent at spin_rate: 100 Hz = the
+  // command rate; a 100 ms watchdog then fires within 10 ms of its deadline.
+  timer_ = nh.createTimer(ros::Duration(1.0 / pnh.param("spin_rate", 100.0)),
                           &BaseDriverNodelet::onTimer, this);
   NODELET_INFO("base driver on %s: r=%.3f m, b=%.3f m, max torque %.1f N m, watchdogs %.0f/%.0f ms",
                transport_->describe().c_str(), config.geometry.wheel_radius,

@@ -190,7 +190,7 @@ TEST_F(DriverNodeTest, CommandSilenceBrakesWithin100ms) {
   const double silent_since = last_publish;
   const double braked_at = chair->waitUntil([this] { return braked(); }, 1.0);
   ASSERT_GT(braked_at, 0);
-  // Watchdog 100 ms after the last message; allowance for the driver's 500 Hz timer, the
+  // Watchdog 100 ms after the last message; allowance for the driver's 100 Hz timer, the
   // controller's 1 ms step and message transport in sim time.
   RecordProperty("brake_delay_ms", std::to_string((braked_at - silent_since) * 1e3));
   std::cerr << "brake " << (braked_at - silent_since) * 1e3 << " ms (sim) after the last message\n";

@@ -1,6 +1,7 @@
 // The chair's robot model: /robot_description from the chair file, fixed joints on /tf_static,
 // wheel joints from /joint_states on /tf (angle zero until the first message).
 #include <wheelchair_description/chair_params.h>
+#include <wheelchair_description/package_paths.h>
 #include <wheelchair_description/urdf_generator.h>
 
 #include "urdf_transforms.h"
@@ -23,7 +24,7 @@ class DescriptionPublisherNodelet : public nodelet::Nodelet {
   void onInit() override {
     ros::NodeHandle& nh = getNodeHandle();
     ros::NodeHandle& pnh = getPrivateNodeHandle();
-    const std::string chair_file = pnh.param<std::string>("chair_file", defaultChairParamsPath());
+    const std::string chair_file = pnh.param<std::string>("chair_file", chairParamsPathFromRos());
     const double frequency = pnh.param("publish_frequency", 20.0);
     std::string urdf;
     try {

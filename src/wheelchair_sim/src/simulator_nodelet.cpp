@@ -22,6 +22,7 @@
 #include <wheelchair_base_driver/emulated_motor_controller.h>
 #include <wheelchair_base_driver/udp_transport.h>
 #include <wheelchair_description/chair_params.h>
+#include <wheelchair_description/package_paths.h>
 #include <wheelchair_msgs/WheelTorques.h>
 #include <pluginlib/class_list_macros.hpp>
 
@@ -103,8 +104,10 @@ class SimulatorNodelet : public nodelet::Nodelet {
     ros::NodeHandle& pnh = getPrivateNodeHandle();
     const std::string world_path = pnh.param<std::string>("world", "");
     const std::string chair_path =
-        pnh.param<std::string>("chair_config", wheelchair_description::defaultChairParamsPath());
-    const std::string sim_path = pnh.param<std::string>("sim_config", defaultSimParamsPath());
+        pnh.param<std::string>("chair_config", wheelchair_description::chairParamsPathFromRos());
+    const std::string sim_path = pnh.param<std::string>(
+        "sim_config", wheelchair_description::packageFile("wheelchair_sim", "config/sim.yaml",
+                                                          defaultSimParamsPath()));
     pnh.param("speed", speed_, 1.0);
     pnh.param("step", step_, 0.005);
     pnh.param("torque_timeout", torque_timeout_, 0.5);

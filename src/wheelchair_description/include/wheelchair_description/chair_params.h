@@ -43,7 +43,9 @@ ChairParams loadChairParams(const std::string& yaml_path);
 /// Checks a parameter set; throws std::invalid_argument naming the first bad value.
 void validate(const ChairParams& params);
 
-/// Path of the chair file installed with this package (compile-time default).
+/// Path of the chair file known at compile time (this package's install, else source dir):
+/// for tests and tools. Nodelets resolve it at run time: chairParamsPathFromRos()
+/// (package_paths.h), so an installed package works wherever it is installed.
 std::string defaultChairParamsPath();
 
 }  // namespace wheelchair_description
