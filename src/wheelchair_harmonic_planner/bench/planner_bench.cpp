@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <queue>
 #include <string>
 
@@ -31,6 +32,7 @@ void emit(const std::string& method, const std::string& metric, double value,
       "\"%s\"}\n",
       case_name.c_str(), method.c_str(), metric.c_str(), std::isfinite(value) ? value : -1.0,
       unit.c_str());
+  fflush(stdout);  // rows measured before a timeout of the run script are kept
 }
 
 /// Shortest path length on the 8-connected free cells of the hard C-space (Dijkstra) [m].
@@ -79,9 +81,61 @@ double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+double cpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+/// The default solver alone (CPU time of solveHarmonic, no C-space or descent), then a replan
+/// to the same goal after a small map change (a 20 cm block dropped on the free cell nearest
+/// the map centre that is not the start or goal cell): the planner warm-starts from its last
+/// solution.
+void solveOnlyAndReplan(const wheelchair_mapping::OccupancyMap& map, const ConfigSpace& cs,
+                        const ParameterMap& common, const Pose2D& start, const Pose2D& goal) {
+  int gx, gy, sx, sy;
+  cs.worldToCell(goal.x, goal.y, gx, gy);
+  cs.worldToCell(start.x, start.y, sx, sy);
+  const double cpu0 = cpuSeconds();
+  const HarmonicSolution sol = solveHarmonic(cs, gx, gy, HarmonicSolverParams());
+  emit("harmonic", "solve_cpu_time", (cpuSeconds() - cpu0) * 1e3, "ms");
+  emit("harmonic", "solve_converged", sol.converged ? 1.0 : 0.0, "bool");
+
+  HarmonicPlanner planner;
+  planner.initialize("harmonic", map, common);
+  std::vector<Pose2D> plan;
+  Certificate cert;
+  planner.makePlan(start, goal, plan, cert);
+  wheelchair_mapping::OccupancyMap changed = map;
+  long best = -1;
+  double best_d = INFINITY;
+  for (int iy = 0; iy < cs.height(); ++iy)
+    for (int ix = 0; ix < cs.width(); ++ix) {
+      const double d = std::hypot(ix - cs.width() / 2.0, iy - cs.height() / 2.0);
+      if (cs.isFree(ix, iy) && d < best_d && std::hypot(ix - gx, iy - gy) > 20 &&
+          std::hypot(ix - sx, iy - sy) > 20) {
+        best_d = d;
+        best = static_cast<long>(cs.index(ix, iy));
+      }
+    }
+  const int bx = static_cast<int>(best % cs.width()), by = static_cast<int>(best / cs.width());
+  for (int iy = by - 2; iy < by + 2; ++iy)
+    for (int ix = bx - 2; ix < bx + 2; ++ix) changed.at(ix, iy) = wheelchair_mapping::kOccupied;
+  const double cpu1 = cpuSeconds();
+  const auto t1 = std::chrono::steady_clock::now();
+  planner.initialize("harmonic", changed, common);
+  const bool ok = planner.makePlan(start, goal, plan, cert);
+  emit("harmonic_replan", "success", ok ? 1.0 : 0.0, "bool");
+  emit("harmonic_replan", "time", seconds(t1) * 1e3, "ms");
+  emit("harmonic_replan", "cpu_time", (cpuSeconds() - cpu1) * 1e3, "ms");
+  emit("harmonic_replan", "warm_started", cert.warm_started ? 1.0 : 0.0, "bool");
+  emit("harmonic_replan", "solver_iterations", cert.solver_iterations, "solves+sweeps");
+}
+
 }  // namespace
 
-// Usage: planner_bench CASE (world.yaml | mazeN) SX SY GX GY [png] [jacobi_max_sweeps]
+// Usage: planner_bench CASE (world.yaml | mazeN) SX SY GX GY [png|-] [jacobi_max_sweeps]
+//        [sor_max_sweeps]
 int main(int argc, char** argv) {
   if (argc < 6) {
     fprintf(stderr, "usage: planner_bench <world.yaml|mazeN> sx sy gx gy [out.png] [jacobi]\n");
@@ -106,24 +160,34 @@ int main(int argc, char** argv) {
   emit("grid_dijkstra", "length", shortest, "m");
   std::vector<std::pair<std::string, std::vector<Pose2D>>> drawn;
 
-  // harmonic: cold plan (C-space + solve + descent) with the default SOR solver and with the
-  // experimental multigrid (capped at 200 V-cycles so that a non-converging case stays short).
-  for (const std::string solver : {"sor", "multigrid"}) {
-    const std::string method = solver == "sor" ? "harmonic" : "harmonic_multigrid";
+  // harmonic: cold plan (C-space + solve + descent) with each solver: the default direct
+  // log-space LDL^T, SOR (capped at sor_max sweeps, argv[8], so that 2048^2 stays short) and the
+  // experimental multigrid (capped at 200 V-cycles). Wall and process CPU time.
+  const std::string sor_max = argc > 8 ? argv[8] : "20000";
+  for (const std::string solver : {"direct", "sor", "multigrid"}) {
+    const std::string method = solver == "direct" ? "harmonic" : "harmonic_" + solver;
     HarmonicPlanner planner;
     ParameterMap p = common;
     p["solver"] = solver;
     if (solver == "multigrid") p["max_iterations"] = "200";
+    if (solver == "sor") p["max_iterations"] = sor_max;
+    const double cpu0 = cpuSeconds();
     const auto t0 = std::chrono::steady_clock::now();
     planner.initialize(method, map, p);
     std::vector<Pose2D> plan;
     Certificate cert;
     const bool ok = planner.makePlan(start, goal, plan, cert);
     report(method, ok, seconds(t0), plan, cs, shortest);
+    emit(method, "cpu_time", (cpuSeconds() - cpu0) * 1e3, "ms");
     emit(method, "solver_iterations", cert.solver_iterations,
-         solver == "sor" ? "sweeps" : "cycles");
+         solver == "multigrid" ? "cycles" : (solver == "sor" ? "sweeps" : "solves+sweeps"));
     emit(method, "solver_residual", cert.solver_residual, "relative");
-    if (ok && solver == "sor") drawn.push_back({"harmonic", plan});
+    if (ok) emit(method, "min_gradient", cert.min_gradient, "1/m");
+    if (ok) emit(method, "plateau_steps", cert.plateau_steps, "steps");
+    if (ok && solver == "direct") drawn.push_back({"harmonic", plan});
+    if (solver == "direct") {
+      solveOnlyAndReplan(map, cs, common, start, goal);
+    }
   }
   for (const std::string algo : {"RRTConnect", "RRTstar", "PRMstar", "BITstar"}) {
     OmplPlanner planner;

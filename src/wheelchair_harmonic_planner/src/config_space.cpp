@@ -111,9 +111,7 @@ bool ConfigSpace::worldToCell(double x, double y, int& ix, int& iy) const {
   return true;
 }
 
-double ConfigSpace::distanceAt(double x, double y) const {
-  int cx, cy;
-  if (!worldToCell(x, y, cx, cy)) return 0.0;  // outside the map is an obstacle
+double ConfigSpace::clearanceAt(double x, double y) const {
   double gx, gy;
   worldToGrid(x, y, gx, gy);
   gx = std::clamp(gx, 0.0, width_ - 1.0);
@@ -125,7 +123,7 @@ double ConfigSpace::distanceAt(double x, double y) const {
   const double d = (1 - tx) * (1 - ty) * distance_[index(x0, y0)] +
                    tx * (1 - ty) * distance_[index(x1, y0)] +
                    (1 - tx) * ty * distance_[index(x0, y1)] + tx * ty * distance_[index(x1, y1)];
-  return d;
+  return d - params_.inscribed_radius;
 }
 
 size_t ConfigSpace::freeCount() const {

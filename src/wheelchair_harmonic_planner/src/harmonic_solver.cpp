@@ -2,6 +2,7 @@
 #include <wheelchair_harmonic_planner/scaled_multigrid.h>
 
 #include "harmonic_stencil.h"
+#include "log_cholesky.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,6 +42,15 @@ void sorSweep(const Stencil& s, const std::vector<double>& a, long w, double ome
 
 }  // namespace
 
+HarmonicSolverParams::Method solverMethodFromName(const std::string& name) {
+  using Method = HarmonicSolverParams::Method;
+  if (name == "direct") return Method::kDirect;
+  if (name == "sor") return Method::kSor;
+  if (name == "multigrid") return Method::kMultigrid;
+  throw std::invalid_argument("harmonic solver must be 'direct', 'sor' or 'multigrid', not '" +
+                              name + "'");
+}
+
 bool HarmonicSolution::reachable(int ix, int iy) const {
   return ix >= 0 && iy >= 0 && ix < width && iy < height && std::isfinite(at(ix, iy));
 }
@@ -72,15 +82,15 @@ void initialGuess(const ConfigSpace& cs, const Stencil& stencil, const std::vect
 }
 
 /// Symmetric SOR on the rescaled equation, rescaling every params.sweeps_per_rescale sweeps.
+/// `coarse_phase`: start with single log-space Gauss-Seidel steps (for a guess far off).
 void solveSor(const ConfigSpace& cs, const Stencil& stencil, const HarmonicSolverParams& params,
-              HarmonicSolution& sol) {
+              bool coarse_phase, HarmonicSolution& sol) {
   const long w = cs.width();
   sol.omega = params.omega > 0.0 ? params.omega : estimateOmega(cs);
   std::vector<double> a(4 * stencil.cells.size());
   std::vector<double> v(sol.log_u.size(), 0.0);
   v[cs.index(sol.goal_ix, sol.goal_iy)] = 1.0;
-  const int max_iter = std::max(1, params.max_iterations);
-  bool coarse_phase = !sol.warm_started;
+  const int max_iter = sol.iterations + std::max(1, params.max_iterations);
   while (true) {
     sol.residual = relativeResidual(stencil, sol.log_u, w, &a);
     if (sol.residual < params.tolerance) {
@@ -104,6 +114,22 @@ void solveSor(const ConfigSpace& cs, const Stencil& stencil, const HarmonicSolve
     }
     if (coarse_phase && change < 0.5) coarse_phase = false;
   }
+}
+
+/// Direct solve unless the warm start already meets the tolerance; SOR polish if needed.
+void solveDirect(const ConfigSpace& cs, const Stencil& stencil, const HarmonicSolverParams& params,
+                 HarmonicSolution& sol) {
+  const long w = cs.width();
+  if (sol.warm_started) {
+    sol.residual = relativeResidual(stencil, sol.log_u, w, nullptr);
+    if (sol.residual < params.tolerance) {
+      sol.converged = true;
+      return;
+    }
+  }
+  const bool solved = solveLogCholesky(stencil, w, cs.index(sol.goal_ix, sol.goal_iy), sol.log_u);
+  sol.iterations = solved ? 1 : 0;
+  solveSor(cs, stencil, params, !solved && !sol.warm_started, sol);
 }
 
 /// V-cycles on the rescaled equation, rescaling after every params.cycles_per_rescale cycles.
@@ -154,8 +180,10 @@ HarmonicSolution solveHarmonic(const ConfigSpace& cs, int goal_ix, int goal_iy,
                      warm_start->height == sol.height && warm_start->goal_ix == goal_ix &&
                      warm_start->goal_iy == goal_iy;
   initialGuess(cs, stencil, dist, sol.warm_started ? warm_start : nullptr, sol);
-  if (params.method == HarmonicSolverParams::Method::kSor) {
-    solveSor(cs, stencil, params, sol);
+  if (params.method == HarmonicSolverParams::Method::kDirect) {
+    solveDirect(cs, stencil, params, sol);
+  } else if (params.method == HarmonicSolverParams::Method::kSor) {
+    solveSor(cs, stencil, params, !sol.warm_started, sol);
   } else {
     solveMultigrid(cs, stencil, params, sol);
   }

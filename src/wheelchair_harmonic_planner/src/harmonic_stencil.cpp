@@ -41,6 +41,7 @@ Stencil buildStencil(const ConfigSpace& cs, const std::vector<int>& dist, size_t
     return use_conductance ? cs.conductance(static_cast<int>(k % w), static_cast<int>(k / w)) : 1.0;
   };
   s.weight.resize(4 * s.cells.size());
+  s.total.resize(s.cells.size());
   for (size_t c = 0; c < s.cells.size(); ++c) {
     const size_t k = s.cells[c];
     double total = 0.0;
@@ -51,6 +52,7 @@ Stencil buildStencil(const ConfigSpace& cs, const std::vector<int>& dist, size_t
       total += edge;
     }
     for (int d = 0; d < 4; ++d) s.weight[4 * c + d] /= total;
+    s.total[c] = total;
   }
   return s;
 }

@@ -18,6 +18,7 @@ std::vector<int> reachableDistances(const ConfigSpace& cs, size_t goal);
 struct Stencil {
   std::vector<size_t> cells;    ///< free cells connected to the goal, goal excluded
   std::vector<double> weight;   ///< 4 normalized weights per listed cell (E, W, N, S)
+  std::vector<double> total;    ///< sum of the cell's 4 edge conductances (incl. to obstacles)
   std::vector<uint8_t> active;  ///< 1 for cells whose log u is finite (incl. goal)
 };
 

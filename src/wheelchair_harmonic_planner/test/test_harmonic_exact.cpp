@@ -1,6 +1,6 @@
 // The solver returns the harmonic function of the paper's boundary problem: compared with the
-// exact solution of a one-cell strip (closed form) and with a direct sparse solve of the same
-// discrete Laplace equation on small 2-D grids.
+// exact solution of a one-cell strip (closed form) and with an independent sparse LU solve of the
+// same discrete Laplace equation on small 2-D grids.
 #include <wheelchair_harmonic_planner/harmonic_solver.h>
 #include <wheelchair_harmonic_planner/maze.h>
 
@@ -98,10 +98,12 @@ TEST(HarmonicExact, MatchesDirectSparseSolveOnRandomGrids) {
   }
 }
 
-TEST(HarmonicExact, WarmStartConvergesFasterToTheSameSolution) {
+// The default solver (direct) is what every other test here runs; these two pin down SOR.
+TEST(HarmonicExact, SorWarmStartConvergesFasterToTheSameSolution) {
   OccupancyMap m = makeMaze(200, 8, 2, 7);
   ConfigSpaceParams p = pointRobot();
   HarmonicSolverParams sp;
+  sp.method = HarmonicSolverParams::Method::kSor;
   sp.tolerance = 1e-8;
   const HarmonicSolution cold = solveHarmonic(ConfigSpace(m, p), 6, 6, sp);
   ASSERT_TRUE(cold.converged);
@@ -126,13 +128,13 @@ TEST(HarmonicExact, WarmStartConvergesFasterToTheSameSolution) {
 namespace {
 
 /// Both solvers on the same C-space and goal agree cell by cell (relative to |log u|).
-void expectMultigridMatchesSor(const ConfigSpace& cs, int gx, int gy, double tolerance,
-                               double agreement) {
+void expectSolverMatchesSor(HarmonicSolverParams::Method method, const ConfigSpace& cs, int gx,
+                            int gy, double tolerance, double agreement) {
   HarmonicSolverParams sp;
   sp.tolerance = tolerance;
   sp.method = HarmonicSolverParams::Method::kSor;
   const HarmonicSolution sor = solveHarmonic(cs, gx, gy, sp);
-  sp.method = HarmonicSolverParams::Method::kMultigrid;
+  sp.method = method;
   sp.max_iterations = 2000;
   const HarmonicSolution mg = solveHarmonic(cs, gx, gy, sp);
   ASSERT_TRUE(sor.converged);
@@ -148,9 +150,9 @@ void expectMultigridMatchesSor(const ConfigSpace& cs, int gx, int gy, double tol
   }
 }
 
-}  // namespace
-
-TEST(HarmonicExact, MultigridAgreesWithSorOnRandomGridsAndAMaze) {
+/// Three random 62 x 62 grids (point robot) and a 144^2 maze in the chair's C-space with the
+/// clearance band (conductance), goal in a corner: `method` agrees with SOR cell by cell.
+void expectAgreementWithSor(HarmonicSolverParams::Method method) {
   for (uint32_t seed = 1; seed <= 3; ++seed) {
     std::mt19937 rng(seed);
     OccupancyMap m = makeCorridor(3.0, 3.0, 0.05, 1);  // 62 x 62 with a wall ring
@@ -159,15 +161,51 @@ TEST(HarmonicExact, MultigridAgreesWithSorOnRandomGridsAndAMaze) {
       for (int ix = 1; ix < 61; ++ix)
         if (blocked(rng)) m.at(ix, iy) = wheelchair_mapping::kOccupied;
     m.at(30, 30) = wheelchair_mapping::kFree;
-    expectMultigridMatchesSor(ConfigSpace(m, pointRobot()), 30, 30, 1e-10, 1e-6);
+    expectSolverMatchesSor(method, ConfigSpace(m, pointRobot()), 30, 30, 1e-10, 1e-6);
   }
-  // The chair's C-space with the clearance band (conductance) in a maze, goal in a corner.
   const ConfigSpace maze(makeMaze(144, 24, 4, 3), ConfigSpaceParams());
   double gx, gy;
   mazePassageCentre(4, 4, 24, 4, 0.05, gx, gy);
   int gix, giy;
   ASSERT_TRUE(maze.worldToCell(gx, gy, gix, giy));
-  expectMultigridMatchesSor(maze, gix, giy, 1e-8, 1e-5);
+  expectSolverMatchesSor(method, maze, gix, giy, 1e-8, 1e-5);
+}
+
+}  // namespace
+
+TEST(HarmonicExact, MultigridAgreesWithSorOnRandomGridsAndAMaze) {
+  expectAgreementWithSor(HarmonicSolverParams::Method::kMultigrid);
+}
+
+TEST(HarmonicExact, DirectAgreesWithSorOnRandomGridsAndAMaze) {
+  expectAgreementWithSor(HarmonicSolverParams::Method::kDirect);
+}
+
+// Direct solver, replanning to the same goal: an unchanged map is accepted from the warm start
+// without a solve (0 iterations); after a small change the result equals a cold solve.
+TEST(HarmonicExact, DirectWarmStartIsReusedWhenStillExactAndResolvedAfterAChange) {
+  OccupancyMap m = makeMaze(200, 8, 2, 7);
+  HarmonicSolverParams sp;
+  sp.tolerance = 1e-8;
+  const HarmonicSolution cold = solveHarmonic(ConfigSpace(m, pointRobot()), 6, 6, sp);
+  ASSERT_TRUE(cold.converged);
+  EXPECT_EQ(cold.iterations, 1);
+  const HarmonicSolution same = solveHarmonic(ConfigSpace(m, pointRobot()), 6, 6, sp, &cold);
+  EXPECT_TRUE(same.converged && same.warm_started);
+  EXPECT_EQ(same.iterations, 0);
+  for (int iy = 150; iy < 160; ++iy)
+    for (int ix = 150; ix < 160; ++ix) m.at(ix, iy) = wheelchair_mapping::kOccupied;
+  const ConfigSpace changed(m, pointRobot());
+  const HarmonicSolution warm = solveHarmonic(changed, 6, 6, sp, &cold);
+  const HarmonicSolution fresh = solveHarmonic(changed, 6, 6, sp);
+  ASSERT_TRUE(warm.converged && fresh.converged);
+  EXPECT_EQ(warm.iterations, 1);
+  for (size_t k = 0; k < fresh.log_u.size(); ++k) {
+    ASSERT_EQ(std::isfinite(warm.log_u[k]), std::isfinite(fresh.log_u[k])) << "cell " << k;
+    if (std::isfinite(fresh.log_u[k])) {
+      ASSERT_NEAR(warm.log_u[k], fresh.log_u[k], 1e-12);
+    }
+  }
 }
 
 TEST(HarmonicExact, GoalInObstacleIsRejected) {

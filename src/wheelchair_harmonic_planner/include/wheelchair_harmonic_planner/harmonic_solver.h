@@ -8,23 +8,31 @@
 #include <wheelchair_harmonic_planner/scaled_multigrid.h>
 
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace wheelchair_harmonic_planner {
 
 struct HarmonicSolverParams {
-  enum class Method { kMultigrid, kSor };
-  Method method = Method::kSor;  ///< kMultigrid: see scaled_multigrid.h (README: not yet faster)
+  /// kDirect: sparse LDL^T with log-space triangular solves (log_cholesky.h), then SOR sweeps
+  /// only if its residual misses the tolerance; kSor: rescaled SOR; kMultigrid: experimental
+  /// (scaled_multigrid.h, README: does not converge on large mazes).
+  enum class Method { kDirect, kMultigrid, kSor };
+  Method method = Method::kDirect;
   /// Convergence: max over free cells of the relative residual
   /// |sum_j w_ij u_j / sum_j w_ij - u_i| / u_i  (= |Delta log u| of one Jacobi step).
   double tolerance = 1e-5;
-  int max_iterations = 20000;  ///< V-cycles (multigrid) or sweeps (SOR)
+  int max_iterations = 20000;  ///< V-cycles (multigrid) or sweeps (SOR, direct's polish)
   int cycles_per_rescale = 1;  ///< multigrid: V-cycles between two re-scalings of the log field
   MultigridParams multigrid;
   double omega = 0.0;           ///< SOR: factor; 0 = estimated from the widest free region
   int sweeps_per_rescale = 8;   ///< SOR: linear sweeps between two re-scalings of the log field
   bool use_conductance = true;  ///< false: plain Laplace (the paper's equation everywhere)
 };
+
+/// "direct", "sor" or "multigrid" (the planner's `solver` parameter); throws
+/// std::invalid_argument naming the choices otherwise.
+HarmonicSolverParams::Method solverMethodFromName(const std::string& name);
 
 struct HarmonicSolution {
   int width = 0;
@@ -33,7 +41,8 @@ struct HarmonicSolution {
   int goal_iy = -1;
   /// log u per cell: 0 at the goal, -infinity at obstacles and cells not connected to the goal.
   std::vector<double> log_u;
-  int iterations = 0;  ///< V-cycles or SOR sweeps
+  int iterations = 0;  ///< V-cycles or SOR sweeps; direct: 1 (0 if the warm start already
+                       ///< met the tolerance) + polishing SOR sweeps
   double residual = std::numeric_limits<double>::infinity();
   double omega = 1.0;
   bool converged = false;
