@@ -111,7 +111,9 @@ bool ConfigSpace::worldToCell(double x, double y, int& ix, int& iy) const {
   return true;
 }
 
-double ConfigSpace::clearanceAt(double x, double y) const {
+double ConfigSpace::distanceAt(double x, double y) const {
+  int cx, cy;
+  if (!worldToCell(x, y, cx, cy)) return 0.0;  // outside the map is an obstacle
   double gx, gy;
   worldToGrid(x, y, gx, gy);
   gx = std::clamp(gx, 0.0, width_ - 1.0);
@@ -123,7 +125,7 @@ double ConfigSpace::clearanceAt(double x, double y) const {
   const double d = (1 - tx) * (1 - ty) * distance_[index(x0, y0)] +
                    tx * (1 - ty) * distance_[index(x1, y0)] +
                    (1 - tx) * ty * distance_[index(x0, y1)] + tx * ty * distance_[index(x1, y1)];
-  return d - params_.inscribed_radius;
+  return d;
 }
 
 size_t ConfigSpace::freeCount() const {

@@ -1,4 +1,5 @@
 #include <wheelchair_harmonic_planner/harmonic_planner.h>
+#include <wheelchair_harmonic_planner/footprint_planning.h>
 #include <wheelchair_harmonic_planner/path_metrics.h>
 #include <wheelchair_harmonic_planner/plan_failure.h>
 
@@ -41,7 +42,11 @@ void HarmonicPlanner::initialize(const std::string& name,
     s.max_iterations = 2000;  // V-cycles
   }
   solver_params_ = s;
-  cspace_ = std::make_unique<ConfigSpace>(map, configSpaceParams(params));
+  const ConfigSpaceParams cspace_params = configSpaceParams(params);
+  footprint_params_ = footprintPlanningParams(params, cspace_params);
+  checker_.reset();
+  cspace_ = std::make_unique<ConfigSpace>(map, cspace_params);
+  checker_ = std::make_unique<FootprintChecker>(*cspace_, footprint_params_.footprint);
   map_geometry_ = map;
   map_geometry_.data.clear();
   solution_current_ = false;  // the previous solution stays as a warm start
@@ -93,12 +98,14 @@ bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vec
   plan.front().y = start.y;
   plan.push_back(goal);
   assignHeadings(plan, goal.yaw);
-  fillPathFigures(*cspace_, plan, cert);
   if (!pathIsCollisionFree(*cspace_, plan)) {
     cert.failure_reason = "internal error: descent path leaves the free C-space";
     return finish(false);
   }
-  return finish(true);
+  cert.path_stage = "harmonic";
+  const bool ok = enforceFootprint(*checker_, footprint_params_, start, goal, plan, cert);
+  fillPathFigures(*cspace_, plan, cert);
+  return finish(ok);
 }
 
 bool HarmonicPlanner::potentialGrid(wheelchair_mapping::OccupancyMap& grid) const {

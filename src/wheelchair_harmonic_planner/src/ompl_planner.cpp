@@ -1,3 +1,4 @@
+#include <wheelchair_harmonic_planner/footprint_planning.h>
 #include <wheelchair_harmonic_planner/harmonic_planner.h>
 #include <wheelchair_harmonic_planner/ompl_planner.h>
 #include <wheelchair_harmonic_planner/path_metrics.h>
@@ -45,7 +46,11 @@ void OmplPlanner::initialize(const std::string& name, const wheelchair_mapping::
   const double seed = getParam(params, "seed", 0.0);
   if (seed > 0.0) ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(seed));
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-  cspace_ = std::make_unique<ConfigSpace>(map, configSpaceParams(params));
+  const ConfigSpaceParams cspace_params = configSpaceParams(params);
+  footprint_params_ = footprintPlanningParams(params, cspace_params);
+  checker_.reset();
+  cspace_ = std::make_unique<ConfigSpace>(map, cspace_params);
+  checker_ = std::make_unique<FootprintChecker>(*cspace_, footprint_params_.footprint);
   // Fail now, not at the first goal, if the planner name is wrong.
   makeOmplPlanner(planner_type_, std::make_shared<ob::SpaceInformation>(
                                      std::make_shared<ob::RealVectorStateSpace>(2)));
@@ -106,12 +111,14 @@ bool OmplPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vector<
   }
   plan.push_back(goal);
   assignHeadings(plan, goal.yaw);
-  fillPathFigures(cs, plan, cert);
   if (!pathIsCollisionFree(cs, plan)) {
     cert.failure_reason = "OMPL path leaves the free C-space after post-processing";
     return finish(false);
   }
-  return finish(true);
+  cert.path_stage = "ompl";
+  const bool ok = enforceFootprint(*checker_, footprint_params_, start, goal, plan, cert);
+  fillPathFigures(cs, plan, cert);
+  return finish(ok);
 }
 
 }  // namespace wheelchair_harmonic_planner

@@ -4,6 +4,7 @@
 #include <wheelchair_description/chair_params.h>
 #include <wheelchair_harmonic_planner/MakePlan.h>
 #include <wheelchair_harmonic_planner/PlanCertificate.h>
+#include <wheelchair_harmonic_planner/footprint.h>
 #include <wheelchair_harmonic_planner/global_planner.h>
 #include <wheelchair_mapping/ros_conversions.h>
 
@@ -113,12 +114,18 @@ class PlannerHostNodelet : public nodelet::Nodelet {
           break;
       }
     }
-    if (params_.count("inscribed_radius") == 0) {
+    if (params_.count("inscribed_radius") == 0 || params_.count("footprint") == 0) {
       std::string chair_file;
       pnh.param<std::string>("chair_params", chair_file,
                              wheelchair_description::defaultChairParamsPath());
       const auto chair = wheelchair_description::loadChairParams(chair_file);
-      params_["inscribed_radius"] = std::to_string(chair.inscribedRadius());
+      if (params_.count("inscribed_radius") == 0)
+        params_["inscribed_radius"] = std::to_string(chair.inscribedRadius());
+      if (params_.count("footprint") == 0) {  // the polygon whose sweep every plan must clear
+        std::vector<Vertex> polygon;
+        for (const auto& v : chair.footprint) polygon.push_back({v.x(), v.y()});
+        params_["footprint"] = formatFootprint(polygon);
+      }
     }
   }
 
@@ -273,6 +280,15 @@ PlanCertificate toMsg(const Certificate& c, const std_msgs::Header& header) {
   m.min_clearance_point.y = c.min_clearance_y;
   m.clearance.assign(c.clearance.begin(), c.clearance.end());
   m.planning_time = c.planning_time;
+  m.path_stage = c.path_stage;
+  m.footprint_checked = c.footprint_checked;
+  m.footprint_clearance = c.footprint_clearance;
+  m.footprint_clearance_point.x = c.footprint_clearance_x;
+  m.footprint_clearance_point.y = c.footprint_clearance_y;
+  m.sweep_poses = c.sweep_poses;
+  m.first_stage_sweep = c.first_stage_sweep;
+  m.search_expansions = c.search_expansions;
+  m.search_time = c.search_time;
   return m;
 }
 

@@ -40,8 +40,18 @@ class ConfigSpace {
   bool isFree(int ix, int iy) const { return inBounds(ix, iy) && free_[index(ix, iy)] != 0; }
   /// Distance from the cell centre to the nearest obstacle cell [m] (0 inside obstacles).
   double obstacleDistance(int ix, int iy) const { return distance_[index(ix, iy)]; }
+  /// Distance from a world point to the nearest obstacle cell edge, bilinearly interpolated
+  /// between cell centres [m] (0 in obstacles).
+  double distanceAt(double x, double y) const;
+  /// Distance of the cell holding a world point to the nearest obstacle [m]; 0 outside the map.
+  double cellDistanceAt(double x, double y) const {
+    int ix, iy;
+    return worldToCell(x, y, ix, iy) ? distance_[index(ix, iy)] : 0.0;
+  }
   /// Clearance beyond the inscribed circle at a world point, bilinearly interpolated [m].
-  double clearanceAt(double x, double y) const;
+  double clearanceAt(double x, double y) const {
+    return distanceAt(x, y) - params_.inscribed_radius;
+  }
   /// Conductance of a free cell in (0, 1]: 1 at >= clearance_band, band_conductance at the
   /// hard boundary, smooth in between; 1 everywhere when clearance_band <= min_clearance.
   double conductance(int ix, int iy) const { return conductance_[index(ix, iy)]; }

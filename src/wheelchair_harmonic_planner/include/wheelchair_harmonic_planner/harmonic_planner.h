@@ -2,6 +2,7 @@
 #pragma once
 
 #include <wheelchair_harmonic_planner/config_space.h>
+#include <wheelchair_harmonic_planner/footprint_planning.h>
 #include <wheelchair_harmonic_planner/global_planner.h>
 #include <wheelchair_harmonic_planner/gradient_descent.h>
 #include <wheelchair_harmonic_planner/harmonic_solver.h>
@@ -27,10 +28,13 @@ class HarmonicPlanner : public GlobalPlanner {
   /// The last solved potential (log u), e.g. for publishing; null before the first plan.
   const HarmonicSolution* solution() const { return solution_ ? &*solution_ : nullptr; }
   const ConfigSpace* configSpace() const { return cspace_.get(); }
+  const FootprintChecker* footprintChecker() const { return checker_.get(); }
 
  private:
   std::string name_;
   std::unique_ptr<ConfigSpace> cspace_;
+  FootprintPlanningParams footprint_params_;
+  std::unique_ptr<FootprintChecker> checker_;      ///< on cspace_
   wheelchair_mapping::OccupancyMap map_geometry_;  ///< the map without its cells
   HarmonicSolverParams solver_params_;
   DescentParams descent_params_;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <wheelchair_harmonic_planner/config_space.h>
+#include <wheelchair_harmonic_planner/footprint_planning.h>
 #include <wheelchair_harmonic_planner/global_planner.h>
 
 #include <memory>
@@ -26,6 +27,8 @@ class OmplPlanner : public GlobalPlanner {
   double time_limit_ = 1.0;
   bool simplify_ = true;
   std::unique_ptr<ConfigSpace> cspace_;
+  FootprintPlanningParams footprint_params_;
+  std::unique_ptr<FootprintChecker> checker_;  ///< on cspace_
 };
 
 }  // namespace wheelchair_harmonic_planner

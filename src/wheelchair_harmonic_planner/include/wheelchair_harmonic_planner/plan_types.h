@@ -35,6 +35,16 @@ struct Certificate {
   double min_clearance_y = 0.0;
   std::vector<double> clearance;  ///< clearance profile, one value per plan pose [m]
   double planning_time = 0.0;     ///< wall time of makePlan [s]
+  // Footprint (footprint_planning.h): the plan's executed sweep with the chair's polygon.
+  std::string path_stage;              ///< "harmonic", "ompl" or "footprint_search"
+  bool footprint_checked = false;      ///< the sweep was checked with the footprint
+  double footprint_clearance = 0.0;    ///< smallest footprint clearance along the sweep [m]
+  double footprint_clearance_x = 0.0;  ///< the body point where it occurs [m]
+  double footprint_clearance_y = 0.0;
+  int sweep_poses = 0;            ///< poses checked (<= 2 cm / 2 degrees apart)
+  std::string first_stage_sweep;  ///< why the first stage's path failed its sweep, if it did
+  int search_expansions = 0;      ///< footprint search nodes expanded (0: not run)
+  double search_time = 0.0;       ///< [s]
 };
 
 }  // namespace wheelchair_harmonic_planner

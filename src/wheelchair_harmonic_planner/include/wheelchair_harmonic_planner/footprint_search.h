@@ -1,0 +1,48 @@
+// Footprint-aware (x, y, heading) search: Hybrid A* with forward motion primitives only
+// (straight and arcs; no reversing: the only laser looks forward), an optional in-place rotation
+// at the start (the controller rotates at rest before a path), cost = length + a soft-clearance
+// penalty, heuristic = the geodesic distance to the goal on the grid. A candidate path counts
+// only when its executed sweep (sweep.h: the controller's smoothing and the final rotation)
+// keeps the hard minimum footprint clearance.
+#pragma once
+
+#include <wheelchair_harmonic_planner/footprint.h>
+#include <wheelchair_harmonic_planner/sweep.h>
+
+#include <string>
+#include <vector>
+
+namespace wheelchair_harmonic_planner {
+
+struct FootprintSearchParams {
+  double time_limit = 3.0;                        ///< [s] wall time
+  double step = 0.15;                             ///< primitive length [m]
+  std::vector<double> radii{2.0, 1.0, 0.6, 0.4};  ///< arc radii [m], both sides, plus straight
+  int heading_bins = 72;                          ///< 5 degrees
+  double xy_bin = 0.1;                            ///< [m]
+  double min_clearance = 0.05;                    ///< hard footprint clearance [m]
+  double soft_clearance = 0.20;                   ///< preferred footprint clearance [m]
+  double margin = 0.015;  ///< extra hard clearance of the primitives: the controller's smoothing
+                          ///< moves the path by up to ~1 cm at curvature steps [m]
+  double clearance_weight = 2.0;  ///< cost per metre at the hard minimum, relative to length
+  double turn_weight = 0.1;       ///< extra cost per metre per 1/m of curvature
+  double rotation_cost = 0.3;     ///< cost of the start rotation [m/rad]
+  double goal_tolerance = 0.12;   ///< [m] from where a last straight piece joins the goal
+  double heuristic_weight = 1.5;  ///< weighted A* (>= 1)
+  int max_candidates = 200;       ///< goal-region arrivals whose sweep is verified
+};
+
+struct FootprintSearchResult {
+  bool found = false;
+  std::vector<Pose2D> path;  ///< start position ... goal (goal heading on the last pose)
+  SweepCheck sweep;          ///< the found path's executed sweep, verified
+  size_t expansions = 0;
+  double time = 0.0;   ///< [s]
+  std::string reason;  ///< on failure
+};
+
+FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pose2D& start,
+                                      const Pose2D& goal, const FootprintSearchParams& params,
+                                      const SweepParams& sweep_params = SweepParams());
+
+}  // namespace wheelchair_harmonic_planner
