@@ -4,6 +4,7 @@
 #include <geometry_msgs/PoseArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
+#include <message_filters/subscriber.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
@@ -12,6 +13,7 @@
 #include <std_msgs/String.h>
 #include <std_srvs/Empty.h>
 #include <tf2_ros/buffer.h>
+#include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 #include <wheelchair_kld/kld_localizer.h>
@@ -25,6 +27,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <string>
 
 namespace wheelchair_kld {
@@ -67,6 +70,9 @@ KldParams loadParams(const ros::NodeHandle& pnh) {
 class KldLocalizerNodelet : public nodelet::Nodelet {
  private:
   void onInit() override {
+    // Callbacks (a latched /map at once) may run on the manager's worker threads while this
+    // still runs: they wait until everything, last_status_ included, is set up.
+    std::lock_guard<std::mutex> lock(mutex_);
     ros::NodeHandle& nh = getNodeHandle();
     ros::NodeHandle& pnh = getPrivateNodeHandle();
     params_ = loadParams(pnh);
@@ -76,6 +82,8 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     pnh.param("transform_tolerance", transform_tolerance_, transform_tolerance_);
     pnh.param("expected_beams", expected_beams_, expected_beams_);
     pnh.param("global_localization_on_start", global_on_start_, global_on_start_);
+    pnh.param("scan_queue_size", scan_queue_size_, scan_queue_size_);
+    pnh.param("tf_timeout", tf_timeout_, tf_timeout_);
     int seed = 1;
     pnh.param("seed", seed, seed);
     seed_ = static_cast<uint64_t>(seed);
@@ -86,7 +94,19 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     count_pub_ = nh.advertise<std_msgs::Int32>("kld/particle_count", 5);
     status_pub_ = nh.advertise<std_msgs::String>("kld/localized", 5, true);
     map_sub_ = nh.subscribe("map", 1, &KldLocalizerNodelet::onMap, this);
-    scan_sub_ = nh.subscribe("scan", 5, &KldLocalizerNodelet::onScan, this);
+    // Like amcl: a scan waits (in a bounded queue, without blocking a thread) until odom ->
+    // base_link is known at its stamp; odometry may lag the laser by a few tens of ms.
+    scan_sub_.subscribe(nh, "scan", 5);
+    scan_sub_.registerCallback(&KldLocalizerNodelet::onScanArrived, this);
+    scan_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::LaserScan>>(
+        scan_sub_, *tf_buffer_, odom_frame_, static_cast<uint32_t>(std::max(1, scan_queue_size_)),
+        nh);
+    scan_filter_->registerCallback(&KldLocalizerNodelet::onScan, this);
+    scan_filter_->registerFailureCallback(
+        [this](const sensor_msgs::LaserScan::ConstPtr& msg,
+               tf2_ros::filter_failure_reasons::FilterFailureReason reason) {
+          onScanDropped(msg, reason);
+        });
     init_sub_ = nh.subscribe("initialpose", 2, &KldLocalizerNodelet::onInitialPose, this);
     global_srv_ = nh.advertiseService("global_localization",
                                       &KldLocalizerNodelet::onGlobalLocalization, this);
@@ -160,25 +180,55 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     return true;
   }
 
+  /// Every scan as it arrives (before the tf wait): reports a sustained tf failure -- no scan
+  /// could be used for tf_timeout although scans keep coming -- as not localized. A single late
+  /// or dropped scan never changes the status.
+  void onScanArrived(const sensor_msgs::LaserScan::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const ros::Time now = ros::Time::now();
+    if (last_tf_ok_.isZero() || now < last_tf_ok_) last_tf_ok_ = now;  // start, or time reset
+    if (!tf_buffer_->_frameExists(msg->header.frame_id))
+      warnThrottled("tf frame",
+                    "kld: scan skipped, tf missing: unknown frame '" + msg->header.frame_id + "'");
+    if ((now - last_tf_ok_).toSec() > tf_timeout_) {
+      std::ostringstream why;
+      why << "tf missing: no " << odom_frame_ << " -> " << base_frame_
+          << " transform at the scan times for more than " << tf_timeout_ << " s";
+      publishStatus(why.str());
+    }
+  }
+
+  /// A scan the message filter gave up on (queue full, or older than the tf buffer).
+  void onScanDropped(const sensor_msgs::LaserScan::ConstPtr& msg,
+                     tf2_ros::filter_failure_reasons::FilterFailureReason reason) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::ostringstream text;
+    text << "kld: scan skipped, tf missing: no " << odom_frame_ << " -> '" << msg->header.frame_id
+         << "' transform at its stamp "
+         << (reason == tf2_ros::filter_failure_reasons::OutTheBack ? "(older than the tf buffer)"
+                                                                   : "(scan queue full)");
+    warnThrottled("tf dropped", text.str());
+  }
+
   void onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!localizer_) {
       publishStatus("no map yet");
       return;
     }
+    if (msg->header.stamp <= last_scan_stamp_) return;  // released out of order: already past
     mrpt::math::TPose2D odom, laser;
     try {
       odom = toPose2D(
-          tf_buffer_
-              ->lookupTransform(odom_frame_, base_frame_, msg->header.stamp, ros::Duration(0.1))
-              .transform);
+          tf_buffer_->lookupTransform(odom_frame_, base_frame_, msg->header.stamp).transform);
       laser = toPose2D(
           tf_buffer_->lookupTransform(base_frame_, msg->header.frame_id, ros::Time(0)).transform);
     } catch (const tf2::TransformException& e) {
       warnThrottled("tf", std::string("kld: scan skipped, tf missing: ") + e.what());
-      publishStatus(std::string("tf missing: ") + e.what());
       return;
     }
+    last_scan_stamp_ = msg->header.stamp;
+    last_tf_ok_ = ros::Time::now();
     const auto result = localizer_->update(odom, fromScanMsg(*msg, laser));
     if (result == UpdateResult::kRejected) {
       warnThrottled(localizer_->lastRejection(),
@@ -252,6 +302,9 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   std::string map_frame_ = "map", odom_frame_ = "odom", base_frame_ = "base_link";
   double transform_tolerance_ = 0.1;
   int expected_beams_ = 0;
+  int scan_queue_size_ = 5;  ///< scans waiting for odometry (0.5 s of lag at 10 Hz)
+  double tf_timeout_ = 0.5;  ///< no usable scan for this long while scans arrive: not localized
+  ros::Time last_tf_ok_, last_scan_stamp_;
   bool global_on_start_ = false;
   uint64_t seed_ = 1;
   std::mutex mutex_;
@@ -263,7 +316,9 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Publisher pose_pub_, cloud_pub_, count_pub_, status_pub_;
-  ros::Subscriber map_sub_, scan_sub_, init_sub_;
+  message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
+  std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> scan_filter_;
+  ros::Subscriber map_sub_, init_sub_;
   ros::ServiceServer global_srv_;
 };
 

@@ -14,6 +14,9 @@
 #include <wheelchair_mapping/ros_conversions.h>
 
 #include <cmath>
+#include <mutex>
+#include <string>
+#include <vector>
 
 using namespace wheelchair_kld;
 
@@ -32,83 +35,156 @@ geometry_msgs::TransformStamped transform(const mrpt::math::TPose2D& p, const st
 }
 }  // namespace
 
-TEST(KldLocalizerNode, TracksASyntheticDriveAndReportsLocalized) {
-  ros::NodeHandle nh, pnh("~");
-  std::string world;
-  ASSERT_TRUE(pnh.getParam("world", world));
-  const auto map = wheelchair_mapping::loadMap(world);
-  const auto grid = loadWorldGrid(world);
-  DriveParams dp;
-  const auto drive = simulateDrive(grid, worldRoute("flat"), dp);
-
-  geometry_msgs::PoseWithCovarianceStamped last_pose;
-  std::string status;
-  int poses = 0;
-  auto pose_sub = nh.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
-      "kld_pose", 10, [&](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
-        last_pose = *m;
-        ++poses;
-      });
-  auto status_sub = nh.subscribe<std_msgs::String>(
-      "kld/localized", 10, [&](const std_msgs::String::ConstPtr& m) { status = m->data; });
-  auto map_pub = nh.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
-  auto scan_pub = nh.advertise<sensor_msgs::LaserScan>("scan", 10);
-  auto init_pub = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("initialpose", 1, true);
-  tf2_ros::StaticTransformBroadcaster static_tf;
-  tf2_ros::TransformBroadcaster tf;
-  static_tf.sendTransform(transform(dp.sensor_pose, "base_link", "laser", ros::Time::now()));
-  map_pub.publish(wheelchair_mapping::toOccupancyGrid(map, "map", ros::Time::now()));
-  // Wait for the localizer to subscribe and to have the map.
-  for (int i = 0; i < 100 && (scan_pub.getNumSubscribers() == 0 || status == ""); ++i) {
-    ros::Duration(0.05).sleep();
-    ros::spinOnce();
+/// The localizer node with the flat world's map, the laser's static tf and an initial pose at
+/// the start of a synthetic drive (laserScanSimulator, noisy odometry).
+class KldLocalizerNode : public testing::Test {
+ protected:
+  void SetUp() override {
+    std::string world;
+    ASSERT_TRUE(pnh_.getParam("world", world));
+    const auto map = wheelchair_mapping::loadMap(world);
+    drive_ = simulateDrive(loadWorldGrid(world), worldRoute("flat"), dp_);
+    pose_sub_ = nh_.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
+        "kld_pose", 10, [this](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          last_pose_ = *m;
+          ++poses_;
+        });
+    status_sub_ = nh_.subscribe<std_msgs::String>("kld/localized", 50,
+                                                  [this](const std_msgs::String::ConstPtr& m) {
+                                                    std::lock_guard<std::mutex> lock(mutex_);
+                                                    statuses_.push_back(m->data);
+                                                  });
+    map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
+    scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
+    init_pub_ = nh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("initialpose", 1, true);
+    static_tf_.sendTransform(transform(dp_.sensor_pose, "base_link", "laser", ros::Time::now()));
+    map_pub_.publish(wheelchair_mapping::toOccupancyGrid(map, "map", ros::Time::now()));
+    // Wait for the localizer to subscribe and to have the map.
+    for (int i = 0; i < 100 && (scan_pub_.getNumSubscribers() == 0 || status().empty()); ++i)
+      ros::Duration(0.05).sleep();
+    ASSERT_GT(scan_pub_.getNumSubscribers(), 0u);
+    geometry_msgs::PoseWithCovarianceStamped init;
+    init.header.frame_id = "map";
+    init.header.stamp = ros::Time::now();
+    init.pose.pose = toPoseMsg(drive_[0].truth);
+    init.pose.covariance[0] = init.pose.covariance[7] = 0.01;
+    init.pose.covariance[35] = 0.0025;
+    init_pub_.publish(init);
+    ros::Duration(0.3).sleep();
   }
-  ASSERT_GT(scan_pub.getNumSubscribers(), 0u);
-  geometry_msgs::PoseWithCovarianceStamped init;
-  init.header.frame_id = "map";
-  init.header.stamp = ros::Time::now();
-  init.pose.pose = toPoseMsg(drive[0].truth);
-  init.pose.covariance[0] = init.pose.covariance[7] = 0.01;
-  init.pose.covariance[35] = 0.0025;
-  init_pub.publish(init);
-  ros::Duration(0.3).sleep();
 
-  const size_t n = std::min<size_t>(drive.size(), 120);
-  double worst = 0;
-  for (size_t i = 0; i < n; ++i) {
-    const ros::Time stamp = ros::Time::now();
-    tf.sendTransform(transform(drive[i].odom, "odom", "base_link", stamp));
+  sensor_msgs::LaserScan scanMsg(size_t i, const ros::Time& stamp) const {
     sensor_msgs::LaserScan scan;
     scan.header.stamp = stamp;
     scan.header.frame_id = "laser";
-    scan.angle_min = drive[i].scan.angle_min;
-    scan.angle_increment = drive[i].scan.angle_increment;
-    scan.angle_max = scan.angle_min + scan.angle_increment * (drive[i].scan.ranges.size() - 1);
-    scan.range_min = drive[i].scan.range_min;
-    scan.range_max = drive[i].scan.range_max;
-    scan.ranges = drive[i].scan.ranges;
+    const auto& s = drive_[i].scan;
+    scan.angle_min = s.angle_min;
+    scan.angle_increment = s.angle_increment;
+    scan.angle_max = scan.angle_min + scan.angle_increment * (s.ranges.size() - 1);
+    scan.range_min = s.range_min;
+    scan.range_max = s.range_max;
+    scan.ranges = s.ranges;
+    return scan;
+  }
+  /// Sends odom -> base_link of drive sample i stamped `stamp`.
+  void sendOdom(size_t i, const ros::Time& stamp) {
+    tf_.sendTransform(transform(drive_[i].odom, "odom", "base_link", stamp));
+  }
+  std::string status() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return statuses_.empty() ? "" : statuses_.back();
+  }
+  /// Statuses received from index `from` on.
+  std::vector<std::string> statusesSince(size_t from) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return {statuses_.begin() + std::min(from, statuses_.size()), statuses_.end()};
+  }
+  size_t statusCount() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return statuses_.size();
+  }
+  int poses() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return poses_;
+  }
+  geometry_msgs::PoseWithCovarianceStamped lastPose() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return last_pose_;
+  }
+
+  ros::NodeHandle nh_, pnh_{"~"};
+  DriveParams dp_;
+  std::vector<DriveSample> drive_;
+  std::mutex mutex_;
+  geometry_msgs::PoseWithCovarianceStamped last_pose_;
+  std::vector<std::string> statuses_;
+  int poses_ = 0;
+  ros::Subscriber pose_sub_, status_sub_;
+  ros::Publisher map_pub_, scan_pub_, init_pub_;
+  tf2_ros::StaticTransformBroadcaster static_tf_;
+  tf2_ros::TransformBroadcaster tf_;
+};
+
+TEST_F(KldLocalizerNode, TracksASyntheticDriveAndReportsLocalized) {
+  const size_t n = std::min<size_t>(drive_.size(), 120);
+  double worst = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const ros::Time stamp = ros::Time::now();
+    sendOdom(i, stamp);
     ros::Duration(0.01).sleep();
-    scan_pub.publish(scan);
+    scan_pub_.publish(scanMsg(i, stamp));
     ros::Duration(0.04).sleep();
-    ros::spinOnce();
-    if (poses > 0 && i > 10) {
-      const auto p = toPose2D(last_pose.pose.pose);
-      worst = std::max(worst, std::hypot(p.x - drive[i].truth.x, p.y - drive[i].truth.y));
+    if (poses() > 0 && i > 10) {
+      const auto p = toPose2D(lastPose().pose.pose);
+      worst = std::max(worst, std::hypot(p.x - drive_[i].truth.x, p.y - drive_[i].truth.y));
     }
   }
   ros::Duration(0.2).sleep();
-  ros::spinOnce();
-  EXPECT_GT(poses, 20);
-  EXPECT_EQ(last_pose.header.frame_id, "map");
-  const auto p = toPose2D(last_pose.pose.pose);
-  EXPECT_LT(std::hypot(p.x - drive[n - 1].truth.x, p.y - drive[n - 1].truth.y), 0.1);
+  EXPECT_GT(poses(), 20);
+  EXPECT_EQ(lastPose().header.frame_id, "map");
+  const auto p = toPose2D(lastPose().pose.pose);
+  EXPECT_LT(std::hypot(p.x - drive_[n - 1].truth.x, p.y - drive_[n - 1].truth.y), 0.1);
   EXPECT_LT(worst, 0.25);
-  EXPECT_EQ(status, "localized");
+  EXPECT_EQ(status(), "localized");
+}
+
+// Odometry that lags the laser by 30 ms (each scan is published before the odom -> base_link
+// transform at its stamp) must not flip the status; a 1 s tf outage while scans keep coming
+// must (naming the reason), and the status must recover once odometry is back.
+TEST_F(KldLocalizerNode, ToleratesOdometryLagButReportsATfOutage) {
+  size_t i = 0;
+  auto step = [&](bool with_odom) {
+    const ros::Time stamp = ros::Time::now();
+    scan_pub_.publish(scanMsg(i, stamp));
+    ros::Duration(0.03).sleep();
+    if (with_odom) sendOdom(i, stamp);
+    ros::Duration(0.07).sleep();
+    ++i;
+  };
+  sendOdom(0, ros::Time::now());
+  for (; i < 15;) step(true);  // first updates after the initial pose
+  ASSERT_EQ(status(), "localized");
+  const size_t lag_from = statusCount();
+  for (; i < 45;) step(true);
+  const auto during_lag = statusesSince(lag_from);
+  EXPECT_GE(during_lag.size(), 25u) << "scans with lagging odometry were not used";
+  for (const auto& s : during_lag) EXPECT_EQ(s, "localized") << "flipped by a 30 ms odom lag";
+
+  const size_t outage_from = statusCount();
+  for (const size_t end = i + 10; i < end;) step(false);  // 1 s without odometry
+  bool reported = false;
+  for (const auto& s : statusesSince(outage_from)) reported |= s.rfind("tf missing", 0) == 0;
+  EXPECT_TRUE(reported) << "a 1 s tf outage was not reported; last status: " << status();
+
+  for (const size_t end = i + 10; i < end;) step(true);
+  EXPECT_EQ(status(), "localized") << "no recovery after the tf outage";
 }
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "test_kld_localizer_node");
-  ros::AsyncSpinner spinner(0);
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
   return RUN_ALL_TESTS();
 }

@@ -26,6 +26,25 @@ TEST(LocalizationMap, DistanceTransformMatchesBruteForce) {
     }
 }
 
+// Inside a thick wall the distance grows with the depth below the surface (an endpoint that
+// overshoots into a wall is as unlikely as one that falls short by as much).
+TEST(LocalizationMap, DistanceInsideAThickWallIsTheDepthBelowItsSurface) {
+  wheelchair_mapping::OccupancyMap g;
+  g.resolution = 0.05;
+  g.width = 30;
+  g.height = 20;
+  g.data.assign(g.width * g.height, wheelchair_mapping::kFree);
+  for (int iy = 5; iy < 15; ++iy)  // a wall 8 cells thick, x = 10..17
+    for (int ix = 10; ix < 18; ++ix) g.at(ix, iy) = wheelchair_mapping::kOccupied;
+  const LocalizationMap map(wheelchair_mapping::toMrptGrid(g), 10.0);
+  const auto d = [&](int ix, int iy) { return map.obstacleDistance()[iy * g.width + ix]; };
+  EXPECT_NEAR(d(10, 10), 0.0, 1e-6);   // surface
+  EXPECT_NEAR(d(11, 10), 0.05, 1e-6);  // one cell deep
+  EXPECT_NEAR(d(13, 10), 0.15, 1e-6);  // three cells deep (nearest surface: x = 10)
+  EXPECT_NEAR(d(7, 10), 0.15, 1e-6);   // three cells in front of the surface
+  EXPECT_NEAR(d(20, 10), 0.15, 1e-6);  // behind the wall
+}
+
 TEST(LocalizationMap, SamplesPosesOnlyInKnownFreeSpace) {
   const LocalizationMap map(loadWorldGrid(WORLDS_DIR "/office.yaml"), 2.0);
   mrpt::random::CRandomGenerator rng(2);

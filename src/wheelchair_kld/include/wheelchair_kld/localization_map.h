@@ -28,7 +28,9 @@ class LocalizationMap {
     if (ix < 0 || iy < 0 || ix >= size_x_ || iy >= size_y_) return -1;
     return iy * size_x_ + ix;
   }
-  /// Distance from cell centre to the nearest obstacle [m], capped at max_distance.
+  /// Distance from cell centre to the nearest obstacle surface cell (an obstacle cell with a
+  /// non-obstacle 4-neighbour) [m], capped at max_distance: outside obstacles this is the
+  /// distance to the nearest obstacle, inside a thick wall the depth below its surface.
   const std::vector<float>& obstacleDistance() const { return distance_; }
   bool isObstacle(int cell) const { return cell >= 0 && distance_[cell] == 0.0f; }
   bool isFree(int cell) const { return cell >= 0 && free_mask_[cell]; }
