@@ -9,6 +9,16 @@ using protocol::ControllerState;
 
 namespace {
 constexpr double kScheduleSlack = 1e-3;  ///< [s] timer jitter tolerated by periodic frames
+
+/// Periodic frames on a grid of `period`: due up to kScheduleSlack early, so a timer spinning
+/// at the frame rate (ticks a little early or late) keeps the rate instead of skipping every
+/// other period; a faster spin still sends exactly one frame per period. Restarts the grid at
+/// `now` when forced (a frame sent at once) or after a stall of more than a period.
+bool dueOnGrid(double now, double period, bool force, double& next_due) {
+  if (!force && now < next_due - kScheduleSlack) return false;
+  next_due = (force || now - next_due > period) ? now + period : next_due + period;
+  return true;
+}
 }  // namespace
 
 void validate(const DriverConfig& c) {
@@ -193,14 +203,11 @@ void BaseDriverCore::update(double now, bool force_send) {
     force_send = true;  // a change of state goes on the bus at once
   }
   state_ = next;
-  // A periodic frame is due up to kScheduleSlack early: spun by a timer at the command rate,
-  // a tick a little early must not skip a period (the frames would go out at half the rate).
-  if (force_send || now - last_command_time_ >= config_.command_period - kScheduleSlack)
-    sendCommand(now);
-  if (now - last_heartbeat_sent_ >= config_.heartbeat_period - kScheduleSlack) sendHeartbeat(now);
+  if (dueOnGrid(now, config_.command_period, force_send, next_command_due_)) sendCommand();
+  if (dueOnGrid(now, config_.heartbeat_period, false, next_heartbeat_due_)) sendHeartbeat();
 }
 
-void BaseDriverCore::sendCommand(double now) {
+void BaseDriverCore::sendCommand() {
   const bool drive = state_ == DriverState::kDriving;
   protocol::TorqueCommand command;
   command.left = drive ? message_left_ : 0.0;
@@ -208,7 +215,6 @@ void BaseDriverCore::sendCommand(double now) {
   command.enable = drive;
   command.brake = !drive;
   command.sequence = command_sequence_++;
-  last_command_time_ = now;
   last_sent_ = command;
   if (transport_.send(protocol::encode(command))) {
     ++counters_.frames_sent;
@@ -217,7 +223,7 @@ void BaseDriverCore::sendCommand(double now) {
   }
 }
 
-void BaseDriverCore::sendHeartbeat(double now) {
+void BaseDriverCore::sendHeartbeat() {
   using protocol::DriverHeartbeatState;
   protocol::DriverHeartbeat heartbeat;
   heartbeat.state = state_ == DriverState::kDriving ? DriverHeartbeatState::kDriving
@@ -225,7 +231,6 @@ void BaseDriverCore::sendHeartbeat(double now) {
                     : isFault(state_)               ? DriverHeartbeatState::kFault
                                                     : DriverHeartbeatState::kBraking;
   heartbeat.counter = heartbeat_counter_++;
-  last_heartbeat_sent_ = now;
   if (transport_.send(protocol::encode(heartbeat))) {
     ++counters_.frames_sent;
   } else {

@@ -82,6 +82,10 @@ void BaseDriverNodelet::onInit() {
   left_joint_ = pnh.param<std::string>("left_wheel_joint", "left_wheel_joint");
   right_joint_ = pnh.param<std::string>("right_wheel_joint", "right_wheel_joint");
   publish_tf_ = pnh.param("publish_tf", true);
+  // /odom, tf and /joint_states at most at odom_rate (0: on every encoder frame): each one
+  // wakes every tf listener and the description publisher of the process.
+  const double odom_rate = pnh.param("odom_rate", 0.0);
+  odom_period_ = odom_rate > 0.0 && std::isfinite(odom_rate) ? 1.0 / odom_rate : 0.0;
 
   odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
   joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
@@ -178,7 +182,8 @@ void BaseDriverNodelet::onTimer(const ros::TimerEvent&) {
                           bus.last_error.empty() ? "no bus error" : bus.last_error.c_str());
   }
   const OdometryState& odo = core_->odometry();
-  if (odo.stamp > last_odom_stamp_) {
+  // 3/4 of the period: encoder frames (100 Hz) jitter, a late one must not halve the rate.
+  if (odo.stamp > last_odom_stamp_ && odo.stamp - last_odom_stamp_ >= 0.75 * odom_period_) {
     last_odom_stamp_ = odo.stamp;
     publishOdometry(ros::Time(odo.stamp));
   }

@@ -102,8 +102,8 @@ class BaseDriverCore {
  private:
   DriverState evaluate(double now);
   void update(double now, bool force_send);
-  void sendCommand(double now);
-  void sendHeartbeat(double now);
+  void sendCommand();
+  void sendHeartbeat();
   void handleEncoder(const protocol::EncoderCounts& counts, double stamp);
 
   DriverConfig config_;
@@ -128,8 +128,8 @@ class BaseDriverCore {
   protocol::TorqueCommand last_sent_;
   std::uint8_t command_sequence_ = 0;
   std::uint8_t heartbeat_counter_ = 0;
-  double last_command_time_ = -1e300;
-  double last_heartbeat_sent_ = -1e300;
+  double next_command_due_ = -1e300;    ///< next periodic torque frame [s]
+  double next_heartbeat_due_ = -1e300;  ///< next driver heartbeat [s]
   DriverCounters counters_;
   std::string last_bus_error_;
   std::string last_rejection_;

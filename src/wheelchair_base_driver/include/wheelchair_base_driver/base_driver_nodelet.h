@@ -54,6 +54,7 @@ class BaseDriverNodelet : public nodelet::Nodelet {
   std::string odom_frame_, base_frame_, left_joint_, right_joint_;
   bool publish_tf_ = true;
   double last_odom_stamp_ = -1.0;
+  double odom_period_ = 0.0;  ///< [s] least time between published odometries (0: every frame)
   double last_status_time_ = -1.0;
   DriverState last_logged_state_ = DriverState::kNoController;
 };
