@@ -216,7 +216,11 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
       publishStatus("no map yet");
       return;
     }
-    if (msg->header.stamp <= last_scan_stamp_) return;  // released out of order: already past
+    // A scan the filter released after a newer one is already past (more than 1 s back: the
+    // clock was reset, e.g. a restarted simulator, and the scan is taken).
+    if (msg->header.stamp <= last_scan_stamp_ &&
+        msg->header.stamp + ros::Duration(1.0) > last_scan_stamp_)
+      return;
     mrpt::math::TPose2D odom, laser;
     try {
       odom = toPose2D(
