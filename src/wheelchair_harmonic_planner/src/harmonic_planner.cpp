@@ -1,5 +1,5 @@
-#include <wheelchair_harmonic_planner/harmonic_planner.h>
 #include <wheelchair_harmonic_planner/footprint_planning.h>
+#include <wheelchair_harmonic_planner/harmonic_planner.h>
 #include <wheelchair_harmonic_planner/path_metrics.h>
 #include <wheelchair_harmonic_planner/plan_failure.h>
 
