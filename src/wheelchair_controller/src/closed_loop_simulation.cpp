@@ -62,7 +62,11 @@ ClosedLoopResult simulateClosedLoop(const std::vector<Pose2>& path, const Pose2&
       pose_error = {plant.pose_noise_xy * noise(rng), plant.pose_noise_xy * noise(rng),
                     plant.pose_noise_theta * noise(rng)};
     }
-    const PoseMeasurement pose{t, truth + pose_error};
+    const bool corrected =
+        plant.localization_correction_time >= 0.0 && t >= plant.localization_correction_time;
+    const PoseMeasurement pose{
+        t,
+        truth + pose_error + (corrected ? plant.localization_correction : Eigen::Vector3d::Zero())};
     const Eigen::Vector2d eta =
         wheels.update(t, quantize(x.segment<2>(wd::kPsiR), plant.encoder_ticks_per_rev));
 

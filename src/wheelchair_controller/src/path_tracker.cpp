@@ -201,6 +201,7 @@ void PathTracker::startPhases(const State& x) {
   reason_.clear();
   phase_time_ = 0.0;
   overtime_ = 0.0;
+  goal_rotation_corrections_ = 0;
   rate_dot_ = 0.0;
   rate_initialized_ = false;
 }
@@ -247,6 +248,20 @@ bool PathTracker::advancePhase(double dt, const State& x, double error) {
       std::abs(heading_error) < config_.goal_heading_tolerance && rim_speed < kSettledSpeed) {
     beginStop("", x.tail<2>(), TrackerState::kGoalReached);
     return false;
+  }
+  if (error < config_.goal_position_tolerance && rim_speed < kSettledSpeed &&
+      goal_rotation_corrections_ < config_.max_goal_rotation_corrections) {
+    // Settled, P_l in place, heading off: a bounded in-place rotation about the axle as it is.
+    ++goal_rotation_corrections_;
+    const Eigen::Vector3d p = wd::axlePose(x, chair_);
+    phases_.front() = {
+        std::make_shared<RotationOutputTrajectory>(p.head<2>(), p.z(), goal_heading_,
+                                                   chair_.lookahead, config_.rotation_limits),
+        TrackerState::kRotatingToGoal};
+    state_ = TrackerState::kRotatingToGoal;
+    phase_time_ = 0.0;
+    overtime_ = 0.0;
+    return true;
   }
   overtime_ += dt;
   if (overtime_ > config_.goal_timeout) {

@@ -22,6 +22,10 @@ struct PlantConfig {
   /// does (localizer corrections at the scan rate, odometry-smooth in between).
   double pose_noise_rate = 5.0;
   unsigned seed = 1;
+  /// From this time on [s] (negative: never) the measured pose is shifted by this offset
+  /// (x, y, theta): a localization correction, as when a scan snaps map -> odom.
+  double localization_correction_time = -1.0;
+  Eigen::Vector3d localization_correction = Eigen::Vector3d::Zero();
   double max_time = 120.0;      ///< [s]
   double comfort_window = 0.1;  ///< [s] averaging of the measured acceleration and jerk
 };

@@ -30,8 +30,12 @@ struct TrackerConfig {
   double start_heading_tolerance = 0.5;   ///< [rad] larger: rotate in place before the path
   double goal_position_tolerance = 0.05;  ///< [m] P_l at the end of the reference
   double goal_heading_tolerance = 0.05;   ///< [rad]
-  double goal_timeout = 5.0;        ///< [s] after the reference ends, to settle within tolerance
-  double stale_pose_timeout = 0.2;  ///< [s]
+  double goal_timeout = 5.0;  ///< [s] after the reference ends, to settle within tolerance
+  /// Settled at the goal with P_l in tolerance but the heading not: rotate again about the
+  /// axle where it now is, at most this many times. Only P_l is controlled, so a localization
+  /// correction of a few cm during the final rotation turns into l-scaled heading error.
+  int max_goal_rotation_corrections = 2;
+  double stale_pose_timeout = 0.2;      ///< [s]
   double stale_odometry_timeout = 0.2;  ///< [s]
   double pose_jump = 0.5;             ///< [m] between the predicted and the measured axle position
   double governor_soft_error = 0.10;  ///< [m] reference slows above this tracking error
@@ -158,6 +162,7 @@ class PathTracker {
   std::vector<Phase> phases_;  ///< remaining phases, current first
   double goal_heading_ = 0.0;
   double phase_time_ = 0.0, rate_ = 1.0, rate_dot_ = 0.0, overtime_ = 0.0;
+  int goal_rotation_corrections_ = 0;
   bool rate_initialized_ = false;
   double last_saturation_ = 1.0;
   Eigen::Vector2d last_body_accel_ = Eigen::Vector2d::Zero();  ///< (a, w_dot) commanded
