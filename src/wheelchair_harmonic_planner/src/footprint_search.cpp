@@ -12,6 +12,19 @@ namespace wheelchair_harmonic_planner {
 
 namespace {
 
+// The last straight piece to the goal must continue the arrival heading: a piece off to the
+// side or behind would make the chair turn sharply on the spot just before the goal (the
+// controller follows it), moving the axle and its rear sideways.
+bool joinsGoalAhead(const Pose2D& arrival, const Pose2D& goal, const FootprintSearchParams& p) {
+  const double dx = goal.x - arrival.x, dy = goal.y - arrival.y;
+  const double distance = std::hypot(dx, dy);
+  if (distance > p.goal_tolerance) return false;
+  if (distance <= p.goal_join_slack) return true;
+  const double ahead = std::cos(arrival.yaw) * dx + std::sin(arrival.yaw) * dy;
+  const double aside = -std::sin(arrival.yaw) * dx + std::cos(arrival.yaw) * dy;
+  return ahead > 0.0 && std::abs(aside) <= std::tan(p.goal_join_angle) * ahead;
+}
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// 8-connected Dijkstra distance to the goal cell over the cells where the axle may be (its
@@ -189,8 +202,7 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
     expanded[k] = true;
     ++result.expansions;
     const Node node = nodes[idx];
-    const double to_goal = std::hypot(node.pose.x - goal.x, node.pose.y - goal.y);
-    if (to_goal <= params.goal_tolerance) {
+    if (joinsGoalAhead(node.pose, goal, params)) {
       // Cheap first: the final rotation to the goal heading, every 5 degrees.
       bool rotation_ok = true;
       FootprintContact c;

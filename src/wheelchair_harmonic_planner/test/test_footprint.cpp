@@ -186,6 +186,15 @@ TEST(FootprintSearch, RepairsTheHarmonicPathInAnLCornerAndItsSweepHoldsIndepende
   EXPECT_LT(cert.search_time, 5.0);
   EXPECT_NEAR(plan.back().x, goal.x, 1e-9);
   EXPECT_NEAR(plan.back().y, goal.y, 1e-9);
+  // The piece that joins the goal continues the path: no sideways hop just before the goal.
+  ASSERT_GE(plan.size(), 3u);
+  const Pose2D& a = plan[plan.size() - 2];
+  const Pose2D& b = plan[plan.size() - 3];
+  const double join = std::atan2(plan.back().y - a.y, plan.back().x - a.x);
+  const double arrive = std::atan2(a.y - b.y, a.x - b.x);
+  if (std::hypot(plan.back().x - a.x, plan.back().y - a.y) > 0.02) {
+    EXPECT_LT(std::abs(std::remainder(join - arrive, 2 * M_PI)), 0.35);
+  }
   // Independent: brute-force clearance of the controller's execution of this plan.
   EXPECT_GE(bruteSweepClearance(map, start, plan), 0.05 - 0.015);
 }

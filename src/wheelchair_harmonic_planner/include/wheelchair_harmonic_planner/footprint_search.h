@@ -28,6 +28,8 @@ struct FootprintSearchParams {
   double turn_weight = 0.1;       ///< extra cost per metre per 1/m of curvature
   double rotation_cost = 0.3;     ///< cost of the start rotation [m/rad]
   double goal_tolerance = 0.12;   ///< [m] from where a last straight piece joins the goal
+  double goal_join_angle = 0.26;  ///< [rad] that piece within 15 degrees of the arrival heading
+  double goal_join_slack = 0.02;  ///< [m] ... unless it is shorter than this
   double heuristic_weight = 1.5;  ///< weighted A* (>= 1)
   int max_candidates = 200;       ///< goal-region arrivals whose sweep is verified
 };
