@@ -25,7 +25,7 @@ struct FootprintSearchParams {
   double margin = 0.015;  ///< extra hard clearance of the primitives: the controller's smoothing
                           ///< moves the path by up to ~1 cm at curvature steps [m]
   double clearance_weight = 2.0;  ///< cost per metre at the hard minimum, relative to length
-  double turn_weight = 0.1;       ///< extra cost per metre per 1/m of curvature
+  double turn_weight = 0.5;       ///< extra cost per metre per 1/m of curvature
   double rotation_cost = 0.3;     ///< cost of the start rotation [m/rad]
   double goal_tolerance = 0.12;   ///< [m] from where a last straight piece joins the goal
   double goal_join_angle = 0.26;  ///< [rad] that piece within 15 degrees of the arrival heading
