@@ -88,9 +88,12 @@ class SimNode : public ::testing::Test {
 
   /// Waits until ground truth and odometry stamped after the current (simulated) time came in.
   bool waitForFreshState() {
-    const ros::Time now = ros::Time::now();
-    return waitFor([&] { return truth().header.stamp > now && latest_.odom.header.stamp > now; },
-                   10.0);
+    // This node's sim time is the last /clock it received, which may lag the simulator's own
+    // by a few clock periods: a state stamped just after `now` can still predate a service call
+    // made at `now` (seen once in fresh-clone CI after a teleport). 50 ms of margin covers it.
+    const ros::Time after = ros::Time::now() + ros::Duration(0.05);
+    return waitFor(
+        [&] { return truth().header.stamp > after && latest_.odom.header.stamp > after; }, 10.0);
   }
 
   ros::NodeHandle nh_;
