@@ -9,12 +9,19 @@
 using mrpt::math::TPose2D;
 using namespace wheelchair_kld;
 
-TEST(LocalizationMap, DistanceTransformMatchesBruteForce) {
+namespace {
+wheelchair_mapping::OccupancyMap freeGrid(double resolution, int width, int height) {
   wheelchair_mapping::OccupancyMap g;
-  g.resolution = 0.1;
-  g.width = 37;
-  g.height = 23;
+  g.resolution = resolution;
+  g.width = width;
+  g.height = height;
   g.data.assign(g.width * g.height, wheelchair_mapping::kFree);
+  return g;
+}
+}  // namespace
+
+TEST(LocalizationMap, DistanceTransformMatchesBruteForce) {
+  wheelchair_mapping::OccupancyMap g = freeGrid(0.1, 37, 23);
   const int occ[][2] = {{3, 4}, {30, 20}, {12, 12}, {13, 12}, {0, 22}};
   for (auto& c : occ) g.at(c[0], c[1]) = wheelchair_mapping::kOccupied;
   const LocalizationMap map(wheelchair_mapping::toMrptGrid(g), 10.0);
@@ -29,11 +36,7 @@ TEST(LocalizationMap, DistanceTransformMatchesBruteForce) {
 // Inside a thick wall the distance grows with the depth below the surface (an endpoint that
 // overshoots into a wall is as unlikely as one that falls short by as much).
 TEST(LocalizationMap, DistanceInsideAThickWallIsTheDepthBelowItsSurface) {
-  wheelchair_mapping::OccupancyMap g;
-  g.resolution = 0.05;
-  g.width = 30;
-  g.height = 20;
-  g.data.assign(g.width * g.height, wheelchair_mapping::kFree);
+  wheelchair_mapping::OccupancyMap g = freeGrid(0.05, 30, 20);
   for (int iy = 5; iy < 15; ++iy)  // a wall 8 cells thick, x = 10..17
     for (int ix = 10; ix < 18; ++ix) g.at(ix, iy) = wheelchair_mapping::kOccupied;
   const LocalizationMap map(wheelchair_mapping::toMrptGrid(g), 10.0);
