@@ -45,6 +45,7 @@ void HarmonicPlanner::initialize(const std::string& name,
   const ConfigSpaceParams cspace_params = configSpaceParams(params);
   footprint_params_ = footprintPlanningParams(params, cspace_params);
   checker_.reset();
+  factor_cache_.reset();  // its factors belong to the C-space replaced here
   cspace_ = std::make_unique<ConfigSpace>(map, cspace_params);
   checker_ = std::make_unique<FootprintChecker>(*cspace_, footprint_params_.footprint);
   map_geometry_ = map;
@@ -65,8 +66,10 @@ bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vec
   }
   const bool same_goal = solution_ && solution_->goal_ix == gx && solution_->goal_iy == gy;
   if (!(same_goal && solution_current_)) {
-    HarmonicSolution next =
-        solveHarmonic(*cspace_, gx, gy, solver_params_, same_goal ? &*solution_ : nullptr);
+    // A new goal: the old field's storage is recycled (the factors for this map are cached).
+    if (solution_ && !same_goal) factor_cache_.spare = std::move(solution_->log_u);
+    HarmonicSolution next = solveHarmonic(*cspace_, gx, gy, solver_params_,
+                                          same_goal ? &*solution_ : nullptr, &factor_cache_);
     solution_ = std::move(next);
     solution_current_ = true;
   }

@@ -116,20 +116,39 @@ void solveSor(const ConfigSpace& cs, const Stencil& stencil, const HarmonicSolve
   }
 }
 
-/// Direct solve unless the warm start already meets the tolerance; SOR polish if needed.
-void solveDirect(const ConfigSpace& cs, const Stencil& stencil, const HarmonicSolverParams& params,
-                 HarmonicSolution& sol) {
-  const long w = cs.width();
-  if (sol.warm_started) {
-    sol.residual = relativeResidual(stencil, sol.log_u, w, nullptr);
-    if (sol.residual < params.tolerance) {
-      sol.converged = true;
-      return;
-    }
+/// The goal-independent factors: from the cache when it holds them for this C-space, else
+/// computed (and stored in the cache, if any).
+std::shared_ptr<const LogLdlt> directFactor(const ConfigSpace& cs,
+                                            const HarmonicSolverParams& params,
+                                            HarmonicFactorCache* cache, bool& reused) {
+  reused = cache && cache->factor && cache->cspace == &cs &&
+           cache->use_conductance == params.use_conductance;
+  if (reused) return cache->factor;
+  auto factor = std::make_shared<const LogLdlt>(cs, params.use_conductance);
+  if (cache) {
+    cache->factor = factor;
+    cache->cspace = &cs;
+    cache->use_conductance = params.use_conductance;
+    ++cache->factorizations;
   }
-  const bool solved = solveLogCholesky(stencil, w, cs.index(sol.goal_ix, sol.goal_iy), sol.log_u);
-  sol.iterations = solved ? 1 : 0;
-  solveSor(cs, stencil, params, !solved && !sol.warm_started, sol);
+  return factor;
+}
+
+/// Warm start (same goal, maybe a changed map): taken as is if it still meets the tolerance,
+/// else a direct solve; SOR from the guess if the factorization failed (not expected).
+void solveDirect(const ConfigSpace& cs, const Stencil& stencil, const HarmonicSolverParams& params,
+                 HarmonicFactorCache* cache, HarmonicSolution& sol) {
+  sol.residual = relativeResidual(stencil, sol.log_u, cs.width(), nullptr);
+  if (sol.warm_started && sol.residual < params.tolerance) {
+    sol.converged = true;
+    return;
+  }
+  const auto factor = directFactor(cs, params, cache, sol.factor_reused);
+  if (factor->ok()) {
+    sol.residual = factor->solve(cs.index(sol.goal_ix, sol.goal_iy), sol.log_u);
+    sol.iterations = 1;
+  }
+  solveSor(cs, stencil, params, !factor->ok() && !sol.warm_started, sol);
 }
 
 /// V-cycles on the rescaled equation, rescaling after every params.cycles_per_rescale cycles.
@@ -164,7 +183,8 @@ void solveMultigrid(const ConfigSpace& cs, const Stencil& stencil,
 
 HarmonicSolution solveHarmonic(const ConfigSpace& cs, int goal_ix, int goal_iy,
                                const HarmonicSolverParams& params,
-                               const HarmonicSolution* warm_start) {
+                               const HarmonicSolution* warm_start,
+                               HarmonicFactorCache* factor_cache) {
   if (!cs.isFree(goal_ix, goal_iy)) {
     throw std::invalid_argument("solveHarmonic: goal cell is not free");
   }
@@ -174,14 +194,31 @@ HarmonicSolution solveHarmonic(const ConfigSpace& cs, int goal_ix, int goal_iy,
   sol.goal_ix = goal_ix;
   sol.goal_iy = goal_iy;
   const size_t goal = cs.index(goal_ix, goal_iy);
-  const std::vector<int> dist = reachableDistances(cs, goal);
-  const Stencil stencil = buildStencil(cs, dist, goal, params.use_conductance);
   sol.warm_started = warm_start != nullptr && warm_start->width == sol.width &&
                      warm_start->height == sol.height && warm_start->goal_ix == goal_ix &&
                      warm_start->goal_iy == goal_iy;
+  const bool direct = params.method == HarmonicSolverParams::Method::kDirect;
+  if (direct && !sol.warm_started) {
+    // Direct: the factors (cached per map) and two log-space solves; the residual is checked
+    // on the result and SOR polishes below only if it missed the tolerance.
+    const auto factor = directFactor(cs, params, factor_cache, sol.factor_reused);
+    if (factor->ok()) {
+      if (factor_cache) sol.log_u.swap(factor_cache->spare);
+      sol.residual = factor->solve(goal, sol.log_u);
+      sol.iterations = 1;
+      sol.converged = sol.residual < params.tolerance;
+      if (sol.converged) return sol;
+    }
+  }
+  const std::vector<int> dist = reachableDistances(cs, goal);
+  const Stencil stencil = buildStencil(cs, dist, goal, params.use_conductance);
+  if (direct && sol.iterations == 1) {  // polish the direct solution
+    solveSor(cs, stencil, params, false, sol);
+    return sol;
+  }
   initialGuess(cs, stencil, dist, sol.warm_started ? warm_start : nullptr, sol);
-  if (params.method == HarmonicSolverParams::Method::kDirect) {
-    solveDirect(cs, stencil, params, sol);
+  if (direct) {
+    solveDirect(cs, stencil, params, factor_cache, sol);
   } else if (params.method == HarmonicSolverParams::Method::kSor) {
     solveSor(cs, stencil, params, !sol.warm_started, sol);
   } else {

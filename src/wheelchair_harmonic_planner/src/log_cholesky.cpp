@@ -1,7 +1,5 @@
 #include "log_cholesky.h"
 
-#include <Eigen/SparseCholesky>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,40 +8,11 @@ namespace wheelchair_harmonic_planner {
 
 namespace {
 
-using SparseCol = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 constexpr double kNegInf = -std::numeric_limits<double>::infinity();
 /// A term e^-40 below a row's accumulated sum is below double's resolution of it: skipped.
 constexpr double kNegligible = -40.0;
 /// Re-scale a row's accumulator when a term exceeds it by this much (e^300 < DBL_MAX).
 constexpr double kRescale = 300.0;
-
-/// The system's lower triangle: A_kk = total conductance, A_kj = -edge (k, j unknowns); log b_k
-/// = log of the edge to the goal (u_goal = 1), -inf if none.
-SparseCol assemble(const Stencil& s, long width, size_t goal, size_t cells_total,
-                   std::vector<double>& log_b) {
-  const int n = static_cast<int>(s.cells.size());
-  std::vector<int> id(cells_total, -1);
-  for (int c = 0; c < n; ++c) id[s.cells[c]] = c;
-  const long offsets[4] = {1, -1, width, -width};
-  SparseCol a(n, n);
-  a.reserve(Eigen::VectorXi::Constant(n, 3));
-  log_b.assign(n, kNegInf);
-  for (int c = 0; c < n; ++c) {
-    a.insert(c, c) = s.total[c];
-    for (int d = 0; d < 4; ++d) {
-      const double edge = s.weight[4 * c + d] * s.total[c];
-      const size_t nb = static_cast<size_t>(static_cast<long>(s.cells[c]) + offsets[d]);
-      if (edge <= 0.0) continue;
-      if (nb == goal) {
-        log_b[c] = std::log(edge);
-      } else if (id[nb] > c) {
-        a.insert(id[nb], c) = -edge;  // column c, row below the diagonal
-      }
-    }
-  }
-  a.makeCompressed();
-  return a;
-}
 
 /// Adds c * exp(x) (c > 0) to the row accumulator mantissa * exp(scale), which keeps
 /// mantissa >= 1 so that a term below e^kNegligible of it is negligible (c <= 1 below).
@@ -58,58 +27,164 @@ void accumulate(double c, double x, double& scale, double& mantissa) {
   }
 }
 
-/// L y = b with unit lower L (column-major, L_ik <= 0), in place on x = log y. Column-oriented:
-/// once y_k is final it is scattered into the rows below (one exp per non-zero). |L_ik| <= 1
-/// since every Schur complement of a diagonally dominant M-matrix is one.
-void forwardLog(const SparseCol& lower, std::vector<double>& x) {
-  const int n = static_cast<int>(x.size());
-  std::vector<double> scale(x), mantissa(n);
-  for (int k = 0; k < n; ++k) mantissa[k] = x[k] == kNegInf ? 0.0 : 1.0;
-  for (int k = 0; k < n; ++k) {
-    x[k] = mantissa[k] > 0.0 ? scale[k] + std::log(mantissa[k]) : kNegInf;
-    if (x[k] == kNegInf) continue;
-    for (SparseCol::InnerIterator it(lower, k); it; ++it) {
-      if (it.value() < 0.0) accumulate(-it.value(), x[k], scale[it.row()], mantissa[it.row()]);
-    }
-  }
-}
-
-/// L^T x = z (log z given in x), in place, backwards: x_k = log(z_k + sum_i (-L_ik) x_i) over
-/// column k, scaled by the largest exponent (terms below e^-745 of it underflow to 0).
-void backwardLog(const SparseCol& lower, std::vector<double>& x) {
-  for (int k = static_cast<int>(x.size()) - 1; k >= 0; --k) {
-    double top = x[k];
-    for (SparseCol::InnerIterator it(lower, k); it; ++it) top = std::max(top, x[it.row()]);
-    if (top == kNegInf) continue;
-    double sum = std::exp(x[k] - top);
-    for (SparseCol::InnerIterator it(lower, k); it; ++it) {
-      if (it.value() < 0.0) sum -= it.value() * std::exp(x[it.row()] - top);
-    }
-    x[k] = top + std::log(sum);
-  }
-}
-
 }  // namespace
 
-bool solveLogCholesky(const Stencil& s, long width, size_t goal, std::vector<double>& log_u) {
-  const int n = static_cast<int>(s.cells.size());
-  if (n == 0) return true;
-  std::vector<double> log_b;
-  Eigen::SimplicialLDLT<SparseCol, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt(
-      assemble(s, width, goal, log_u.size(), log_b));
-  if (ldlt.info() != Eigen::Success) return false;
-  const auto& d = ldlt.vectorD();
-  if (!(d.minCoeff() > 0.0)) return false;
-  // Factor of P A P^T: x'[perm[i]] = x[i]. L y = P b, z = y / D, L^T x' = z, u = P^T x'.
-  const auto& perm = ldlt.permutationP().indices();
-  const SparseCol& lower = ldlt.matrixL().nestedExpression();  // strictly lower, unit diagonal
-  std::vector<double> x(n);
-  for (int i = 0; i < n; ++i) x[perm[i]] = log_b[i];
-  forwardLog(lower, x);
-  for (int k = 0; k < n; ++k) x[k] -= std::log(d[k]);
-  backwardLog(lower, x);
-  for (int c = 0; c < n; ++c) log_u[s.cells[c]] = x[perm[c]];
-  return true;
+LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance) : width_(cs.width()) {
+  cholmod_start(&common_);
+  const auto& free = cs.freeMask();
+  id_.assign(free.size(), -1);
+  for (size_t k = 0; k < free.size(); ++k) {
+    if (!free[k]) continue;
+    id_[k] = static_cast<int>(cells_.size());
+    cells_.push_back(k);
+  }
+  const int n = static_cast<int>(cells_.size());
+  if (n == 0) return;
+  auto sigma = [&](size_t k) {
+    return use_conductance
+               ? cs.conductance(static_cast<int>(k % width_), static_cast<int>(k / width_))
+               : 1.0;
+  };
+  // Column c of the lower triangle: the diagonal, then the east (c + 1) and north neighbours
+  // (unknowns are numbered row by row, so both have larger numbers): rows already sorted.
+  ap_.resize(n + 1);
+  ai_.resize(3 * static_cast<size_t>(n));
+  ax_.resize(3 * static_cast<size_t>(n));
+  int nz = 0;
+  const long offsets[4] = {1, width_, -1, -width_};
+  for (int c = 0; c < n; ++c) {
+    const size_t k = cells_[c];
+    ap_[c] = nz;
+    const int diag = nz++;
+    double total = 0.0;
+    for (int d = 0; d < 4; ++d) {
+      const size_t nb = static_cast<size_t>(static_cast<long>(k) + offsets[d]);
+      const bool neighbour_free = id_[nb] >= 0;
+      const double edge = 0.5 * (sigma(k) + (neighbour_free ? sigma(nb) : sigma(k)));
+      total += edge;
+      if (neighbour_free && d < 2) {
+        ai_[nz] = id_[nb];
+        ax_[nz++] = -edge;
+      }
+    }
+    ai_[diag] = c;
+    ax_[diag] = total;
+  }
+  ap_[n] = nz;
+  cholmod_sparse a{};
+  a.nrow = a.ncol = static_cast<size_t>(n);
+  a.nzmax = static_cast<size_t>(nz);
+  a.p = ap_.data();
+  a.i = ai_.data();
+  a.x = ax_.data();
+  a.stype = -1;  // symmetric, lower triangle stored
+  a.itype = CHOLMOD_INT;
+  a.xtype = CHOLMOD_REAL;
+  a.dtype = CHOLMOD_DOUBLE;
+  a.sorted = 1;
+  a.packed = 1;
+  common_.nmethods = 1;  // AMD only (METIS/NESDIS give more fill on these grids and cost more)
+  common_.method[0].ordering = CHOLMOD_AMD;
+  common_.postorder = 1;
+  common_.supernodal = CHOLMOD_SIMPLICIAL;
+  common_.final_ll = 0;  // keep LDL^T
+  factor_ = cholmod_analyze(&a, &common_);
+  if (!factor_ || common_.status != CHOLMOD_OK) return;
+  cholmod_factorize(&a, factor_, &common_);
+  if (common_.status != CHOLMOD_OK || factor_->minor != static_cast<size_t>(n)) return;
+  const int* lp = static_cast<const int*>(factor_->p);
+  const double* lx = static_cast<const double*>(factor_->x);
+  ok_ = true;
+  for (int j = 0; j < n; ++j) ok_ = ok_ && lx[lp[j]] > 0.0;  // D > 0
+}
+
+LogLdlt::~LogLdlt() {
+  if (factor_) cholmod_free_factor(&factor_, &common_);
+  cholmod_finish(&common_);
+}
+
+size_t LogLdlt::factorNonZeros() const {
+  if (!factor_) return 0;
+  const int* lnz = static_cast<const int*>(factor_->nz);
+  size_t total = 0;
+  for (size_t j = 0; j < factor_->n; ++j) total += static_cast<size_t>(lnz[j]);
+  return total;
+}
+
+double LogLdlt::solve(size_t goal, std::vector<double>& log_u) const {
+  log_u.assign(id_.size(), kNegInf);
+  if (id_[goal] < 0) return std::numeric_limits<double>::infinity();
+  const int n = static_cast<int>(cells_.size());
+  // Factor of P A P^T (row k of it is row perm[k] of A). L y = P e_g, z = y / D, L^T x' = z,
+  // w[perm[k]] = x'[k]. Column j of the factor: its diagonal entry (D_j) first, then L_.j.
+  const int* perm = static_cast<const int*>(factor_->Perm);
+  const int* lp = static_cast<const int*>(factor_->p);
+  const int* li = static_cast<const int*>(factor_->i);
+  const int* lnz = static_cast<const int*>(factor_->nz);
+  const double* lx = static_cast<const double*>(factor_->x);
+  x_.assign(n, kNegInf);
+  scale_.assign(n, kNegInf);
+  mantissa_.assign(n, 0.0);
+  int first = 0;
+  while (perm[first] != id_[goal]) ++first;
+  scale_[first] = 0.0;
+  mantissa_[first] = 1.0;
+  // Forward, column-oriented: once y_k is final it is scattered into the rows below (one exp
+  // per non-zero); only the elimination-tree ancestors of the goal become non-zero.
+  for (int k = first; k < n; ++k) {
+    if (mantissa_[k] == 0.0) continue;
+    const double y = scale_[k] + std::log(mantissa_[k]);
+    x_[k] = y - std::log(lx[lp[k]]);  // z = y / D
+    for (int p = lp[k] + 1; p < lp[k] + lnz[k]; ++p) {
+      if (lx[p] < 0.0) accumulate(-lx[p], y, scale_[li[p]], mantissa_[li[p]]);
+    }
+  }
+  // Backward: x_k = log(z_k + sum_i (-L_ik) x_i) over column k, scaled by the largest exponent
+  // (terms below e^-745 of it underflow to 0).
+  for (int k = n - 1; k >= 0; --k) {
+    const int end = lp[k] + lnz[k];
+    double top = x_[k];
+    for (int p = lp[k] + 1; p < end; ++p) top = std::max(top, x_[li[p]]);
+    if (top == kNegInf) continue;
+    double sum = std::exp(x_[k] - top);
+    for (int p = lp[k] + 1; p < end; ++p) {
+      if (lx[p] < 0.0) sum -= lx[p] * std::exp(x_[li[p]] - top);
+    }
+    x_[k] = top + std::log(sum);
+  }
+  const double log_wg = x_[first];
+  for (int k = 0; k < n; ++k) {
+    if (x_[k] != kNegInf) log_u[cells_[perm[k]]] = x_[k] - log_wg;
+  }
+  log_u[goal] = 0.0;
+  return residual(log_u, goal);
+}
+double LogLdlt::residual(const std::vector<double>& log_u, size_t goal) const {
+  // sum_j w_kj exp(l_j - l_k) / total_k per unknown k, from the lower triangle of A (each edge
+  // once, added to both of its rows); 0 for edges to obstacles (u = 0).
+  std::vector<double>& sum = scale_;
+  sum.assign(cells_.size(), 0.0);
+  const int n = static_cast<int>(cells_.size());
+  for (int c = 0; c < n; ++c) {
+    const double lc = log_u[cells_[c]];
+    if (lc == kNegInf) continue;
+    const double total_c = ax_[ap_[c]];  // the diagonal comes first
+    for (int p = ap_[c] + 1; p < ap_[c + 1]; ++p) {
+      const int r = ai_[p];
+      const double lr = log_u[cells_[r]];
+      // u_r / u_c: between edge / total and total / edge (maximum principle), no overflow.
+      const double ratio = std::exp(lr - lc);
+      sum[c] -= ax_[p] / total_c * ratio;
+      sum[r] -= ax_[p] / ax_[ap_[r]] / ratio;
+    }
+  }
+  double worst = 0.0;
+  for (int c = 0; c < n; ++c) {
+    if (cells_[c] != goal && log_u[cells_[c]] != kNegInf) {
+      worst = std::max(worst, std::abs(sum[c] - 1.0));
+    }
+  }
+  return worst;
 }
 
 }  // namespace wheelchair_harmonic_planner

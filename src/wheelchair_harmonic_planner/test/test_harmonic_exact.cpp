@@ -127,6 +127,19 @@ TEST(HarmonicExact, SorWarmStartConvergesFasterToTheSameSolution) {
 
 namespace {
 
+/// `b` equals the reference `a` cell by cell (relative to |log u|), -inf exactly where a is.
+void expectSameField(const HarmonicSolution& a, const HarmonicSolution& b, double agreement) {
+  ASSERT_EQ(a.log_u.size(), b.log_u.size());
+  for (size_t k = 0; k < a.log_u.size(); ++k) {
+    if (std::isfinite(a.log_u[k])) {
+      ASSERT_NEAR(b.log_u[k], a.log_u[k], agreement * std::max(1.0, std::abs(a.log_u[k])))
+          << "cell " << k;
+    } else {
+      ASSERT_FALSE(std::isfinite(b.log_u[k])) << "cell " << k;
+    }
+  }
+}
+
 /// Both solvers on the same C-space and goal agree cell by cell (relative to |log u|).
 void expectSolverMatchesSor(HarmonicSolverParams::Method method, const ConfigSpace& cs, int gx,
                             int gy, double tolerance, double agreement) {
@@ -140,14 +153,7 @@ void expectSolverMatchesSor(HarmonicSolverParams::Method method, const ConfigSpa
   ASSERT_TRUE(sor.converged);
   ASSERT_TRUE(mg.converged) << "residual " << mg.residual << " after " << mg.iterations;
   EXPECT_LT(mg.residual, tolerance);
-  for (size_t k = 0; k < sor.log_u.size(); ++k) {
-    if (std::isfinite(sor.log_u[k])) {
-      ASSERT_NEAR(mg.log_u[k], sor.log_u[k], agreement * std::max(1.0, std::abs(sor.log_u[k])))
-          << "cell " << k;
-    } else {
-      ASSERT_FALSE(std::isfinite(mg.log_u[k])) << "cell " << k;
-    }
-  }
+  expectSameField(sor, mg, agreement);
 }
 
 /// Three random 62 x 62 grids (point robot) and a 144^2 maze in the chair's C-space with the
@@ -206,6 +212,47 @@ TEST(HarmonicExact, DirectWarmStartIsReusedWhenStillExactAndResolvedAfterAChange
       ASSERT_NEAR(warm.log_u[k], fresh.log_u[k], 1e-12);
     }
   }
+}
+
+// The direct solver's factors do not depend on the goal: with a cache, one factorization serves
+// every goal on the same map, in either of two disconnected halves, and each result equals SOR's
+// (cells of the other half exactly unreachable); a new ConfigSpace after reset() is refactored.
+TEST(HarmonicExact, DirectFactorIsReusedForEveryGoalOnTheSameMap) {
+  std::mt19937 rng(5);
+  OccupancyMap m = makeCorridor(3.0, 3.0, 0.05, 1);  // 62 x 62 with a wall ring
+  std::bernoulli_distribution blocked(0.15);
+  for (int iy = 1; iy < 61; ++iy)
+    for (int ix = 1; ix < 61; ++ix)
+      if (blocked(rng) || ix == 31) m.at(ix, iy) = wheelchair_mapping::kOccupied;
+  const int goals[3][2] = {{10, 10}, {50, 40}, {20, 50}};
+  for (const auto& g : goals) m.at(g[0], g[1]) = wheelchair_mapping::kFree;
+  const ConfigSpace cs(m, pointRobot());
+  HarmonicSolverParams direct, sor;
+  direct.tolerance = sor.tolerance = 1e-10;
+  sor.method = HarmonicSolverParams::Method::kSor;
+  HarmonicFactorCache cache;
+  for (int i = 0; i < 3; ++i) {
+    const HarmonicSolution s = solveHarmonic(cs, goals[i][0], goals[i][1], direct, nullptr, &cache);
+    ASSERT_TRUE(s.converged) << "residual " << s.residual;
+    EXPECT_EQ(s.factor_reused, i > 0);
+    EXPECT_EQ(s.iterations, 1);
+    EXPECT_EQ(cache.factorizations, 1);
+    const HarmonicSolution reference = solveHarmonic(cs, goals[i][0], goals[i][1], sor);
+    ASSERT_TRUE(reference.converged);
+    expectSameField(reference, s, 1e-6);
+    for (int iy = 0; iy < 62; ++iy) {
+      for (int ix = 0; ix < 62; ++ix) {
+        if ((ix < 31) != (goals[i][0] < 31)) {
+          ASSERT_FALSE(s.reachable(ix, iy)) << ix << "," << iy;
+        }
+      }
+    }
+    cache.spare = s.log_u;  // recycled storage must not leak into the next result
+  }
+  cache.reset();
+  const ConfigSpace other(m, pointRobot());
+  EXPECT_FALSE(solveHarmonic(other, 10, 10, direct, nullptr, &cache).factor_reused);
+  EXPECT_EQ(cache.factorizations, 2);
 }
 
 TEST(HarmonicExact, GoalInObstacleIsRejected) {

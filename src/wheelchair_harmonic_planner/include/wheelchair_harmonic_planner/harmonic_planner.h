@@ -39,6 +39,7 @@ class HarmonicPlanner : public GlobalPlanner {
   HarmonicSolverParams solver_params_;
   DescentParams descent_params_;
   std::optional<HarmonicSolution> solution_;  ///< kept as warm start for the same goal cell
+  HarmonicFactorCache factor_cache_;          ///< direct solver's factors for cspace_
   bool solution_current_ = false;             ///< solved on the current map
 };
 

@@ -8,6 +8,7 @@
 #include <wheelchair_harmonic_planner/scaled_multigrid.h>
 
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,8 +42,9 @@ struct HarmonicSolution {
   int goal_iy = -1;
   /// log u per cell: 0 at the goal, -infinity at obstacles and cells not connected to the goal.
   std::vector<double> log_u;
-  int iterations = 0;  ///< V-cycles or SOR sweeps; direct: 1 (0 if the warm start already
-                       ///< met the tolerance) + polishing SOR sweeps
+  int iterations = 0;          ///< V-cycles or SOR sweeps; direct: 1 (0 if the warm start already
+                               ///< met the tolerance) + polishing SOR sweeps
+  bool factor_reused = false;  ///< direct: the factors came from the cache (only the solves ran)
   double residual = std::numeric_limits<double>::infinity();
   double omega = 1.0;
   bool converged = false;
@@ -52,12 +54,33 @@ struct HarmonicSolution {
   bool reachable(int ix, int iy) const;
 };
 
+class LogLdlt;
+
+/// The direct solver's map-dependent part: the ordering and LDL^T factors of the equation of
+/// every free cell, which do not depend on the goal (log_cholesky.h). Kept by the caller between
+/// solves on the same ConfigSpace object, a new goal then costs two triangular solves instead of
+/// a factorization. The cache is tied to the ConfigSpace it was filled for (its address): call
+/// reset() whenever that object is replaced or destroyed.
+struct HarmonicFactorCache {
+  std::shared_ptr<const LogLdlt> factor;
+  const ConfigSpace* cspace = nullptr;
+  bool use_conductance = true;
+  int factorizations = 0;     ///< factors computed through this cache (for tests and the bench)
+  std::vector<double> spare;  ///< storage recycled for the next solution's log_u
+  void reset() {
+    factor.reset();
+    cspace = nullptr;
+  }
+};
+
 /// Solves for the goal cell. `warm_start` (same grid, e.g. the previous solution for this goal
 /// on the previous map) is used as the initial guess where it is finite. The goal must be a
-/// free cell (checked: throws std::invalid_argument otherwise).
+/// free cell (checked: throws std::invalid_argument otherwise). `factor_cache` (direct solver
+/// only) keeps the factors for the next goal on the same C-space.
 HarmonicSolution solveHarmonic(const ConfigSpace& cspace, int goal_ix, int goal_iy,
                                const HarmonicSolverParams& params,
-                               const HarmonicSolution* warm_start = nullptr);
+                               const HarmonicSolution* warm_start = nullptr,
+                               HarmonicFactorCache* factor_cache = nullptr);
 
 /// The paper's method, for comparison: plain Jacobi on phi (obstacles 1, goal 0), linear
 /// space, stopping when max |Delta phi| < tolerance. Returns phi per cell.
