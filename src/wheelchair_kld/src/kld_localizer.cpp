@@ -25,6 +25,7 @@ KldLocalizer::KldLocalizer(std::shared_ptr<const LocalizationMap> map, const Kld
 
 void KldLocalizer::resetRecovery() {
   w_slow_ = w_fast_ = 0;
+  last_odom_.reset();  // a new set is the pose now: earlier odometry must not move it
   pending_first_update_ = true;
   fit_window_.clear();
 }

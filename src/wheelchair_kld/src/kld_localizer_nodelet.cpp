@@ -15,7 +15,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_broadcaster.h>
-#include <tf2_ros/transform_listener.h>
+#include <wheelchair_common/shared_tf.h>
 #include <wheelchair_kld/kld_localizer.h>
 #include <wheelchair_kld/ros/conversions.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
@@ -87,8 +87,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     int seed = 1;
     pnh.param("seed", seed, seed);
     seed_ = static_cast<uint64_t>(seed);
-    tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
-    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
+    tf_buffer_ = wheelchair_common::sharedTfBuffer();  // one /tf listener per process
     pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("kld_pose", 5, true);
     cloud_pub_ = nh.advertise<geometry_msgs::PoseArray>("particlecloud", 2, true);
     count_pub_ = nh.advertise<std_msgs::Int32>("kld/particle_count", 5);
@@ -316,8 +315,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   std::optional<std::pair<mrpt::math::TPose2D, mrpt::math::CMatrixDouble33>> pending_init_;
   std::string last_status_;
   std::map<std::string, ros::WallTime> last_warning_;
-  std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
-  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Publisher pose_pub_, cloud_pub_, count_pub_, status_pub_;
   message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;

@@ -47,3 +47,35 @@ TEST(OdometryMotionModel, TranslationVarianceFollowsAlpha3) {
   EXPECT_NEAR(mean, 2.0, 0.01);
   EXPECT_NEAR(var, 0.04 * 4, 0.01);  // alpha3 * trans^2
 }
+
+// A turn on the spot whose axle swings a few millimetres backwards (the simulated chair while
+// aligning: 7.5 mm back per 0.077 rad). Below 1 cm the direction of travel must still be the
+// odometry's: it used to be taken as straight ahead, so every step moved the particles 15 mm
+// the wrong way and a half turn left the estimate ~13 cm off (system test kidnap.test).
+TEST(OdometryMotionModel, SmallBackwardMotionDuringATurnIsAppliedBackwards) {
+  MotionNoise none{0, 0, 0, 0, 0, 0};
+  mrpt::random::CRandomGenerator rng(4);
+  const TPose2D from(1, 2, 3.0),
+      to(1 - 0.0075 * std::cos(2.96), 2 - 0.0075 * std::sin(2.96), 2.923);
+  const TPose2D s = sampleMotionModel(decomposeOdometry(from, to), from, none, rng);
+  EXPECT_NEAR(s.x, to.x, 1e-9);
+  EXPECT_NEAR(s.y, to.y, 1e-9);
+  EXPECT_NEAR(mrpt::math::wrapToPi(s.phi - to.phi), 0, 1e-9);
+}
+
+// Below 1 cm of travel the direction of travel is numerically meaningless: it must not add
+// rotation noise (a 2 mm sideways jitter during a 0.05 rad turn would otherwise spread the
+// headings by alpha1 * (pi/2)^2).
+TEST(OdometryMotionModel, TinyTranslationAddsNoDirectionNoise) {
+  MotionNoise n{0.05, 0, 0, 0, 0, 0};
+  mrpt::random::CRandomGenerator rng(6);
+  const auto u = decomposeOdometry(TPose2D(0, 0, 0), TPose2D(0, 0.002, 0.05));
+  const int N = 20000;
+  double sq = 0;
+  for (int i = 0; i < N; ++i) {
+    const double e =
+        mrpt::math::wrapToPi(sampleMotionModel(u, TPose2D(0, 0, 0), n, rng).phi - 0.05);
+    sq += e * e;
+  }
+  EXPECT_NEAR(sq / N, 0.05 * 0.05 * 0.05, 2e-5);  // alpha1 * dtheta^2 only
+}
