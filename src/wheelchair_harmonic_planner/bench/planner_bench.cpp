@@ -12,6 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -33,6 +34,31 @@ void emit(const std::string& method, const std::string& metric, double value,
       case_name.c_str(), method.c_str(), metric.c_str(), std::isfinite(value) ? value : -1.0,
       unit.c_str());
   fflush(stdout);  // rows measured before a timeout of the run script are kept
+}
+
+/// Bench mazes: 1.8 m passages (36 cells) between 0.2 m walls, so that the chair's body (0.80 m
+/// behind the axle, 0.62 m wide) fits in a passage and turns its corners.
+constexpr int kMazeCorridor = 36;
+constexpr int kMazeWall = 4;
+
+/// Pose at the centre of maze passage (i, j) with the body in free space: the start faces the
+/// passage's first open side (the tail points at the dead end's wall, 0.9 m behind, not into
+/// it), the goal is reached from that side (arrival heading, so no turn on the spot there).
+Pose2D mazeEndPose(const wheelchair_mapping::OccupancyMap& map, int i, int j, bool arrive) {
+  Pose2D p;
+  mazePassageCentre(i, j, kMazeCorridor, kMazeWall, map.resolution, p.x, p.y);
+  const double half = 0.5 * (kMazeCorridor + kMazeWall) * map.resolution;
+  for (const double yaw : {0.0, M_PI_2, M_PI, -M_PI_2}) {
+    // The wall cell between this passage and the next one in direction yaw.
+    const int wx = static_cast<int>(std::floor((p.x + half * std::cos(yaw)) / map.resolution));
+    const int wy = static_cast<int>(std::floor((p.y + half * std::sin(yaw)) / map.resolution));
+    if (wx > 0 && wy > 0 && wx < map.width && wy < map.height &&
+        map.at(wx, wy) == wheelchair_mapping::kFree) {
+      p.yaw = arrive ? std::remainder(yaw + M_PI, 2.0 * M_PI) : yaw;
+      break;
+    }
+  }
+  return p;
 }
 
 /// Shortest path length on the 8-connected free cells of the hard C-space (Dijkstra) [m].
@@ -87,25 +113,66 @@ double cpuSeconds() {
   return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
-/// The default solver alone (CPU time of solveHarmonic, no C-space or descent), then a replan
-/// to the same goal after a small map change (a 20 cm block dropped on the free cell nearest
-/// the map centre that is not the start or goal cell): the planner warm-starts from its last
-/// solution.
-void solveOnlyAndReplan(const wheelchair_mapping::OccupancyMap& map, const ConfigSpace& cs,
-                        const ParameterMap& common, const Pose2D& start, const Pose2D& goal) {
+/// Median, min and max of `reps` CPU-time measurements of f() [ms], emitted as metric (median),
+/// metric_min and metric_max.
+template <class F>
+void emitCpuSpread(const std::string& method, const std::string& metric, int reps, F f) {
+  std::vector<double> ms;
+  for (int r = 0; r < reps; ++r) {
+    const double cpu0 = cpuSeconds();
+    f();
+    ms.push_back((cpuSeconds() - cpu0) * 1e3);
+  }
+  std::sort(ms.begin(), ms.end());
+  emit(method, metric, ms[ms.size() / 2], "ms");
+  emit(method, metric + "_min", ms.front(), "ms");
+  emit(method, metric + "_max", ms.back(), "ms");
+}
+
+/// The default solver alone: cold (CPU time of solveHarmonic: ordering, factorization and the
+/// solves; first solve in this process), then warm, i.e. a new goal (the start cell) on the same
+/// map with the cached factors (5 repetitions), and the gradient descent on that field.
+void solveColdAndWarm(const ConfigSpace& cs, const Pose2D& start, const Pose2D& goal) {
   int gx, gy, sx, sy;
   cs.worldToCell(goal.x, goal.y, gx, gy);
   cs.worldToCell(start.x, start.y, sx, sy);
+  HarmonicFactorCache cache;
   const double cpu0 = cpuSeconds();
-  const HarmonicSolution sol = solveHarmonic(cs, gx, gy, HarmonicSolverParams());
+  const HarmonicSolution sol = solveHarmonic(cs, gx, gy, HarmonicSolverParams(), nullptr, &cache);
   emit("harmonic", "solve_cpu_time", (cpuSeconds() - cpu0) * 1e3, "ms");
   emit("harmonic", "solve_converged", sol.converged ? 1.0 : 0.0, "bool");
+  HarmonicSolution back;
+  emitCpuSpread("harmonic", "warm_solve_cpu_time", 5, [&] {
+    if (!back.log_u.empty()) cache.spare = std::move(back.log_u);
+    back = solveHarmonic(cs, sx, sy, HarmonicSolverParams(), nullptr, &cache);
+  });
+  emit("harmonic", "warm_solve_converged", back.converged && back.factor_reused ? 1.0 : 0.0,
+       "bool");
+  DescentResult d;
+  emitCpuSpread("harmonic", "descent_cpu_time", 5, [&] { d = descend(cs, back, goal.x, goal.y); });
+  emit("harmonic", "descent_reached_goal", d.reached_goal ? 1.0 : 0.0, "bool");
+}
 
+/// Whole plans with the planner plugin on one map: the trip cold, then (after a plan to another
+/// goal, the start cell) the same trip again, now a new goal for the planner whose factors for
+/// this map are cached, then a replan to the same goal after a small map change (a 20 cm block
+/// dropped on the free cell nearest the map centre that is not the start or goal cell): the
+/// planner warm-starts from its last solution.
+void newGoalAndReplan(const wheelchair_mapping::OccupancyMap& map, const ConfigSpace& cs,
+                      const ParameterMap& common, const Pose2D& start, const Pose2D& goal) {
+  int gx, gy, sx, sy;
+  cs.worldToCell(goal.x, goal.y, gx, gy);
+  cs.worldToCell(start.x, start.y, sx, sy);
   HarmonicPlanner planner;
   planner.initialize("harmonic", map, common);
   std::vector<Pose2D> plan;
   Certificate cert;
   planner.makePlan(start, goal, plan, cert);
+  planner.makePlan(start, start, plan, cert);
+  const double cpu0 = cpuSeconds();
+  const bool again = planner.makePlan(start, goal, plan, cert);
+  emit("harmonic_new_goal", "success", again ? 1.0 : 0.0, "bool");
+  emit("harmonic_new_goal", "cpu_time", (cpuSeconds() - cpu0) * 1e3, "ms");
   wheelchair_mapping::OccupancyMap changed = map;
   long best = -1;
   double best_d = INFINITY;
@@ -144,21 +211,24 @@ int main(int argc, char** argv) {
   const std::string what = argv[1];
   const bool maze = what.rfind("maze", 0) == 0;
   const wheelchair_mapping::OccupancyMap map =
-      maze ? makeMaze(std::stoi(what.substr(4)), 24, 4, 1) : wheelchair_mapping::loadMap(what);
+      maze ? makeMaze(std::stoi(what.substr(4)), kMazeCorridor, kMazeWall, 1)
+           : wheelchair_mapping::loadMap(what);
   case_name = maze ? what : what.substr(what.find_last_of('/') + 1);
   Pose2D start{std::stod(argv[2]), std::stod(argv[3]), 0.0};
   Pose2D goal{std::stod(argv[4]), std::stod(argv[5]), 0.0};
-  if (maze) {  // passage indices -> world
-    const int n = (map.width - 4) / 28;
+  if (maze) {  // passage indices -> world poses along the passage's open side
+    const int n = (map.width - kMazeWall) / (kMazeCorridor + kMazeWall);
     auto idx = [&](double v) { return v < 0 ? n + static_cast<int>(v) : static_cast<int>(v); };
-    mazePassageCentre(idx(start.x), idx(start.y), 24, 4, map.resolution, start.x, start.y);
-    mazePassageCentre(idx(goal.x), idx(goal.y), 24, 4, map.resolution, goal.x, goal.y);
+    start = mazeEndPose(map, idx(start.x), idx(start.y), false);
+    goal = mazeEndPose(map, idx(goal.x), idx(goal.y), true);
   }
   const ParameterMap common{{"inscribed_radius", "0.31"}, {"seed", "1"}};
   const ConfigSpace cs(map, configSpaceParams(common));
   const double shortest = gridShortest(cs, start, goal);
   emit("grid_dijkstra", "length", shortest, "m");
   std::vector<std::pair<std::string, std::vector<Pose2D>>> drawn;
+  fprintf(stderr, "start %.2f %.2f %.2f goal %.2f %.2f %.2f\n", start.x, start.y, start.yaw, goal.x,
+          goal.y, goal.yaw);
 
   // harmonic: cold plan (C-space + solve + descent) with each solver: the default direct
   // log-space LDL^T, SOR (capped at sor_max sweeps, argv[8], so that 2048^2 stays short) and the
@@ -178,6 +248,8 @@ int main(int argc, char** argv) {
     Certificate cert;
     const bool ok = planner.makePlan(start, goal, plan, cert);
     report(method, ok, seconds(t0), plan, cs, shortest);
+    if (!ok) fprintf(stderr, "%s: %s\n", method.c_str(), cert.failure_reason.c_str());
+    emit(method, "footprint_repaired", cert.path_stage == "footprint_search" ? 1.0 : 0.0, "bool");
     emit(method, "cpu_time", (cpuSeconds() - cpu0) * 1e3, "ms");
     emit(method, "solver_iterations", cert.solver_iterations,
          solver == "multigrid" ? "cycles" : (solver == "sor" ? "sweeps" : "solves+sweeps"));
@@ -186,7 +258,8 @@ int main(int argc, char** argv) {
     if (ok) emit(method, "plateau_steps", cert.plateau_steps, "steps");
     if (ok && solver == "direct") drawn.push_back({"harmonic", plan});
     if (solver == "direct") {
-      solveOnlyAndReplan(map, cs, common, start, goal);
+      solveColdAndWarm(cs, start, goal);
+      newGoalAndReplan(map, cs, common, start, goal);
     }
   }
   for (const std::string algo : {"RRTConnect", "RRTstar", "PRMstar", "BITstar"}) {
@@ -200,6 +273,9 @@ int main(int argc, char** argv) {
     Certificate cert;
     const bool ok = planner.makePlan(start, goal, plan, cert);
     report("ompl_" + algo, ok, seconds(t0), plan, cs, shortest);
+    if (!ok) fprintf(stderr, "ompl_%s: %s\n", algo.c_str(), cert.failure_reason.c_str());
+    emit("ompl_" + algo, "footprint_repaired", cert.path_stage == "footprint_search" ? 1.0 : 0.0,
+         "bool");
     if (ok) drawn.push_back({algo, plan});
   }
   {  // MRPT's grid planner (wavefront on the occupancy grid, circular robot)

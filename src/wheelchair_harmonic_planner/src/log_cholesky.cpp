@@ -139,18 +139,23 @@ double LogLdlt::solve(size_t goal, std::vector<double>& log_u) const {
       if (lx[p] < 0.0) accumulate(-lx[p], y, scale_[li[p]], mantissa_[li[p]]);
     }
   }
-  // Backward: x_k = log(z_k + sum_i (-L_ik) x_i) over column k, scaled by the largest exponent
-  // (terms below e^-745 of it underflow to 0).
+  // Backward: x_k = log(z_k + sum_i (-L_ik) x_i) over column k in one pass, the sum kept
+  // relative to the largest exponent seen so far (re-scaled when a larger one comes); terms
+  // e^-40 below it are negligible (|L_ik| <= 1) and skip their exp.
   for (int k = n - 1; k >= 0; --k) {
-    const int end = lp[k] + lnz[k];
     double top = x_[k];
-    for (int p = lp[k] + 1; p < end; ++p) top = std::max(top, x_[li[p]]);
-    if (top == kNegInf) continue;
-    double sum = std::exp(x_[k] - top);
-    for (int p = lp[k] + 1; p < end; ++p) {
-      if (lx[p] < 0.0) sum -= lx[p] * std::exp(x_[li[p]] - top);
+    double sum = top == kNegInf ? 0.0 : 1.0;
+    for (int p = lp[k] + 1; p < lp[k] + lnz[k]; ++p) {
+      const double xi = x_[li[p]];
+      if (xi == kNegInf || !(lx[p] < 0.0)) continue;
+      if (xi > top) {
+        sum = (sum == 0.0 ? 0.0 : sum * std::exp(top - xi)) - lx[p];
+        top = xi;
+      } else if (xi - top > kNegligible) {
+        sum -= lx[p] * std::exp(xi - top);
+      }
     }
-    x_[k] = top + std::log(sum);
+    if (sum > 0.0) x_[k] = top + std::log(sum);
   }
   const double log_wg = x_[first];
   for (int k = 0; k < n; ++k) {
