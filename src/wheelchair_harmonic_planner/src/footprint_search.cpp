@@ -74,11 +74,11 @@ Pose2D arcEnd(const Pose2D& p, double kappa, double d) {
           p.y + (std::cos(p.yaw) - std::cos(yaw)) / kappa, yaw};
 }
 
-}  // namespace
-
-FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pose2D& start,
-                                      const Pose2D& goal, const FootprintSearchParams& params,
-                                      const SweepParams& sweep_params) {
+/// One weighted A* run with `attempt`'s settings, at most `time_limit` seconds.
+FootprintSearchResult searchOnce(const FootprintChecker& checker, const Pose2D& start,
+                                 const Pose2D& goal, const FootprintSearchParams& params,
+                                 const FootprintSearchParams::Attempt& attempt, double time_limit,
+                                 const SweepParams& sweep_params) {
   const auto t0 = std::chrono::steady_clock::now();
   FootprintSearchResult result;
   const auto elapsed = [&] {
@@ -105,7 +105,7 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
   const auto heuristic = [&](const Pose2D& p) {
     int ix, iy;
     if (!cs.worldToCell(p.x, p.y, ix, iy)) return kInf;
-    return params.heuristic_weight * h[cs.index(ix, iy)];
+    return attempt.heuristic_weight * h[cs.index(ix, iy)];
   };
   const double bin_angle = 2.0 * M_PI / params.heading_bins;
   const auto key = [&](const Pose2D& p) {
@@ -148,7 +148,7 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
   // Clearance of a pose if it keeps what the rule requires there, else the blocking contact.
   const auto poseOk = [&](const Pose2D& p, bool start_rotation, FootprintContact& c) {
     const double required =
-        rule.required(p, start_rotation) + (start_rotation ? 0.0 : params.margin);
+        rule.required(p, start_rotation) + (start_rotation ? 0.0 : attempt.margin);
     c = checker.clearance(p, required, params.soft_clearance);
     return c.clearance >= required;
   };
@@ -182,8 +182,8 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
       const Node& n = nodes[chain[c]];
       if (n.rotation) continue;
       const Pose2D& from = nodes[n.parent].pose;
-      const int sub = std::max(1, static_cast<int>(std::ceil(params.step / 0.05)));
-      for (int k = 1; k <= sub; ++k) path.push_back(arcEnd(from, n.kappa, params.step * k / sub));
+      const int sub = std::max(1, static_cast<int>(std::ceil(attempt.step / 0.05)));
+      for (int k = 1; k <= sub; ++k) path.push_back(arcEnd(from, n.kappa, attempt.step * k / sub));
     }
     path.front().yaw = path.size() > 1 ? path[1].yaw : start.yaw;
     path.push_back(goal);
@@ -191,8 +191,12 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
   };
 
   while (!open.empty()) {
-    if ((result.expansions & 63) == 0 && elapsed() > params.time_limit) {
+    if ((result.expansions & 63) == 0 && elapsed() > time_limit) {
       result.reason = "footprint search: time limit reached";
+      break;
+    }
+    if (result.expansions >= static_cast<size_t>(params.attempt_expansions)) {
+      result.reason = "footprint search: expansion limit reached";
       break;
     }
     const int idx = open.top().second;
@@ -233,19 +237,19 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
     for (const double kappa : curvatures) {
       // Coarse here (5 cm / 5 degrees); a candidate's whole sweep is verified finely.
       const int n = std::max(
-          {1, static_cast<int>(std::ceil(params.step / 0.05)),
-           static_cast<int>(std::ceil(std::abs(kappa) * params.step / (5.0 * M_PI / 180.0)))});
+          {1, static_cast<int>(std::ceil(attempt.step / 0.05)),
+           static_cast<int>(std::ceil(std::abs(kappa) * attempt.step / (5.0 * M_PI / 180.0)))});
       double cmin = kInf;
       FootprintContact block{kInf, 0.0, 0.0};
       for (int s = 1; s <= n; ++s) {
         FootprintContact c;
-        if (!poseOk(arcEnd(node.pose, kappa, params.step * s / n), false, c)) {
+        if (!poseOk(arcEnd(node.pose, kappa, attempt.step * s / n), false, c)) {
           block = c;
           break;
         }
         cmin = std::min(cmin, c.clearance);
       }
-      const Pose2D end = arcEnd(node.pose, kappa, params.step);
+      const Pose2D end = arcEnd(node.pose, kappa, attempt.step);
       if (std::isfinite(block.clearance)) {
         const double hb = heuristic(node.pose);
         if (hb < closest || (hb == closest && block.clearance < closest_block.clearance)) {
@@ -256,7 +260,7 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
         continue;
       }
       const double cost =
-          params.step * (1.0 + penalty(cmin) + params.turn_weight * std::abs(kappa));
+          attempt.step * (1.0 + penalty(cmin) + params.turn_weight * std::abs(kappa));
       push({end, node.g + cost, idx, kappa, false});
     }
   }
@@ -268,7 +272,7 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
     os << "every arrival at the goal fails its sweep; last: " << last_candidate_reason;
   } else if (std::isfinite(closest_block.clearance)) {
     os << "closest approach with base_link at (" << closest_pose.x << ", " << closest_pose.y
-       << "), " << closest / params.heuristic_weight
+       << "), " << closest / attempt.heuristic_weight
        << " m from the goal, where the body would hit at (" << closest_block.x << ", "
        << closest_block.y << ")";
   } else {
@@ -277,6 +281,35 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
   if (!result.reason.empty()) os << " [" << result.reason << "]";
   result.reason = os.str();
   return finish(false);
+}
+
+}  // namespace
+
+FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pose2D& start,
+                                      const Pose2D& goal, const FootprintSearchParams& params,
+                                      const SweepParams& sweep_params) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const size_t n = params.attempts.size();
+  FootprintSearchResult result;
+  size_t expansions = 0, attempts = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double used =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (used >= params.time_limit) break;
+    result = searchOnce(checker, start, goal, params, params.attempts[i], params.time_limit - used,
+                        sweep_params);
+    expansions += result.expansions;
+    ++attempts;
+    // No expansion: refused before searching (outside the map, goal unreachable for the axle
+    // disc, start overlapping), which no other setting changes.
+    if (result.found || result.expansions == 0) break;
+  }
+  if (n == 0) result.reason = "footprint search: no attempt configured";
+  if (!result.found && attempts > 1)
+    result.reason = std::to_string(attempts) + " search settings tried; last: " + result.reason;
+  result.expansions = expansions;
+  result.time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
 }
 
 }  // namespace wheelchair_harmonic_planner

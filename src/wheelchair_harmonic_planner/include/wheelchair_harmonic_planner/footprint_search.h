@@ -16,21 +16,35 @@ namespace wheelchair_harmonic_planner {
 
 struct FootprintSearchParams {
   double time_limit = 3.0;                        ///< [s] wall time
-  double step = 0.15;                             ///< primitive length [m]
   std::vector<double> radii{2.0, 1.0, 0.6, 0.4};  ///< arc radii [m], both sides, plus straight
   int heading_bins = 72;                          ///< 5 degrees
   double xy_bin = 0.1;                            ///< [m]
   double min_clearance = 0.05;                    ///< hard footprint clearance [m]
   double soft_clearance = 0.20;                   ///< preferred footprint clearance [m]
-  double margin = 0.015;  ///< extra hard clearance of the primitives: the controller's smoothing
-                          ///< moves the path by up to ~1 cm at curvature steps [m]
   double clearance_weight = 2.0;  ///< cost per metre at the hard minimum, relative to length
   double turn_weight = 0.5;       ///< extra cost per metre per 1/m of curvature
   double rotation_cost = 0.3;     ///< cost of the start rotation [m/rad]
   double goal_tolerance = 0.12;   ///< [m] from where a last straight piece joins the goal
   double goal_join_angle = 0.26;  ///< [rad] that piece within 15 degrees of the arrival heading
   double goal_join_slack = 0.02;  ///< [m] ... unless it is shorter than this
-  double heuristic_weight = 1.5;  ///< weighted A* (>= 1)
+  /// One weighted A* run: heuristic weight (>= 1), the extra hard clearance of the primitives
+  /// [m] (the controller's smoothing moves the path by up to ~1 cm at curvature steps; every
+  /// candidate's executed sweep is verified anyway) and the primitive length [m].
+  struct Attempt {
+    double heuristic_weight;
+    double margin;
+    double step;
+  };
+  /// Tried in order until one finds a path, each for at most `attempt_expansions`. Through an
+  /// 80-85 cm door the lattice (bins, 5 degree headings, step) either lands in the few
+  /// centimetres the body has or not, and which setting does changes with a 0.01 rad change of
+  /// the start heading (flat, island -> bedroom door, 5 start headings 3.05-3.16: each setting
+  /// alone found 1-2; these eight in turn found all, 0.2-2.4 s under load). A success needs
+  /// < 2500 expansions.
+  std::vector<Attempt> attempts{{2.5, 0.005, 0.15}, {2.0, 0.0, 0.15},   {2.5, 0.005, 0.20},
+                                {2.0, 0.0, 0.12},   {1.5, 0.015, 0.15}, {2.0, 0.0, 0.20},
+                                {2.5, 0.005, 0.12}, {3.0, 0.0, 0.15}};
+  int attempt_expansions = 3000;  ///< per attempt: deterministic, whatever the machine's load
   int max_candidates = 200;       ///< goal-region arrivals whose sweep is verified
 };
 
