@@ -4,6 +4,7 @@
 #include <wheelchair_kld/kld_localizer.h>
 #include <wheelchair_kld/synthetic_drive.h>
 
+#include <chrono>
 #include <vector>
 
 namespace wheelchair_kld {
@@ -14,7 +15,20 @@ struct StepRecord {
   double error_xy = 0;     ///< [m] estimate vs truth
   double error_theta = 0;  ///< [rad], absolute
   int particles = 0;
-  double update_ms = 0;  ///< wall time of the update call
+  double update_ms = 0;      ///< wall time of the update call
+  double update_cpu_ms = 0;  ///< CPU time of this thread in the update call (load-independent)
+};
+
+/// Wall and thread-CPU time of one call, in ms.
+class UpdateTimer {
+ public:
+  UpdateTimer();
+  /// Stores the time since construction into r.update_ms / r.update_cpu_ms.
+  void stop(StepRecord& r) const;
+
+ private:
+  std::chrono::steady_clock::time_point wall_;
+  double cpu_ms_;
 };
 
 /// Feeds every sample (odom + scan) to `localizer`; the estimate is scored after each call.
@@ -24,7 +38,7 @@ struct DriveSummary {
   double rms_xy = 0, rms_theta = 0, max_xy = 0;
   double mean_particles = 0;
   int max_particles = 0;
-  double mean_ms = 0, p99_ms = 0;
+  double mean_ms = 0, p99_ms = 0, mean_cpu_ms = 0;
   int updates = 0;
 };
 
