@@ -14,7 +14,7 @@
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
 #include <tf2/utils.h>
-#include <tf2_ros/transform_listener.h>
+#include <wheelchair_common/shared_tf.h>
 #include <pluginlib/class_list_macros.hpp>
 #include <pluginlib/class_loader.hpp>
 
@@ -73,7 +73,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     pnh.param("max_pose_age", max_pose_age_, 0.5);
     readPlannerParams(pnh);
     planner_ = loader_.createInstance(planner_name_);  // throws (nodelet fails) on a bad name
-    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_);
+    tf_buffer_ = wheelchair_common::sharedTfBuffer();  // one /tf listener per process
     plan_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
     cert_pub_ = nh.advertise<PlanCertificate>("plan_certificate", 1, true);
     potential_pub_ = pnh.advertise<nav_msgs::OccupancyGrid>("potential", 1, true);
@@ -219,7 +219,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
 
   std::optional<Pose2D> currentPose(std::string& reason) {
     try {
-      const auto t = tf_buffer_.lookupTransform(map_frame_, base_frame_, ros::Time(0));
+      const auto t = tf_buffer_->lookupTransform(map_frame_, base_frame_, ros::Time(0));
       const double age = (ros::Time::now() - t.header.stamp).toSec();
       if (!t.header.stamp.isZero() && age > max_pose_age_) {
         reason = "tf " + map_frame_ + "->" + base_frame_ + " is " + std::to_string(age) +
@@ -248,8 +248,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   std::string planner_name_, map_frame_, base_frame_;
   double max_pose_age_ = 0.5;
   ParameterMap params_;
-  tf2_ros::Buffer tf_buffer_;
-  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   ros::Publisher plan_pub_, cert_pub_, potential_pub_;
   ros::Subscriber map_sub_, goal_sub_;
   ros::ServiceServer service_;

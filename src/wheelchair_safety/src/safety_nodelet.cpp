@@ -17,7 +17,7 @@
 #include <std_msgs/String.h>
 #include <tf2/utils.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
+#include <wheelchair_common/shared_tf.h>
 #include <pluginlib/class_list_macros.hpp>
 
 #include <cmath>
@@ -44,7 +44,7 @@ class SafetyNodelet : public nodelet::Nodelet {
     pnh.param<std::string>("map_frame", map_frame_, "map");
     pnh.param<std::string>("base_frame", base_frame_, "base_link");
     supervisor_ = std::make_unique<SafetySupervisor>(limits);
-    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_);
+    tf_buffer_ = wheelchair_common::sharedTfBuffer();  // one /tf listener per process
 
     stop_pub_ = nh.advertise<std_msgs::Bool>("safety/stop", 1, true);
     status_pub_ = nh.advertise<std_msgs::String>("safety/status", 1, true);
@@ -96,8 +96,8 @@ class SafetyNodelet : public nodelet::Nodelet {
   void onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
     geometry_msgs::TransformStamped laser_in_map;
     try {
-      laser_in_map = tf_buffer_.lookupTransform(map_frame_, msg->header.frame_id, msg->header.stamp,
-                                                ros::Duration(0.05));
+      laser_in_map = tf_buffer_->lookupTransform(map_frame_, msg->header.frame_id,
+                                                 msg->header.stamp, ros::Duration(0.05));
     } catch (const tf2::TransformException& e) {
       NODELET_WARN_THROTTLE(2.0, "scan skipped: no %s -> %s: %s", map_frame_.c_str(),
                             msg->header.frame_id.c_str(), e.what());
@@ -145,7 +145,7 @@ class SafetyNodelet : public nodelet::Nodelet {
     geometry_msgs::TransformStamped base_in_map;
     bool have_pose = false;
     try {
-      base_in_map = tf_buffer_.lookupTransform(map_frame_, base_frame_, ros::Time(0));
+      base_in_map = tf_buffer_->lookupTransform(map_frame_, base_frame_, ros::Time(0));
       have_pose = true;
     } catch (const tf2::TransformException&) {
     }
@@ -173,8 +173,7 @@ class SafetyNodelet : public nodelet::Nodelet {
 
   std::mutex mutex_;
   std::unique_ptr<SafetySupervisor> supervisor_;
-  tf2_ros::Buffer tf_buffer_;
-  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   std::string map_frame_, base_frame_;
   bool have_status_ = false, localized_ = false;
   std::string why_not_ = "no localizer status yet";

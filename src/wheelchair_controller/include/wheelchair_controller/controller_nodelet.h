@@ -11,7 +11,7 @@
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
+#include <wheelchair_common/shared_tf.h>
 
 #include <std_msgs/Bool.h>
 #include <std_msgs/Empty.h>
@@ -55,8 +55,7 @@ class ControllerNodelet : public nodelet::Nodelet {
   wheelchair_description::ChairParams chair_;
   std::string map_frame_, base_frame_;
   WheelSpeedMeasurement wheels_;
-  tf2_ros::Buffer tf_buffer_;
-  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   ros::Subscriber path_sub_, odom_sub_, safety_sub_, user_stop_sub_, localized_sub_;
   ros::Publisher torque_pub_, reference_pub_, error_pub_, status_pub_;
   ros::Timer timer_;

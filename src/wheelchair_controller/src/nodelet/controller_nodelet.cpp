@@ -54,7 +54,7 @@ void ControllerNodelet::onInit() {
   base_frame_ = pnh.param<std::string>("base_frame", "base_link");
   const double rate = pnh.param("rate", 50.0);
 
-  tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_);
+  tf_buffer_ = wheelchair_common::sharedTfBuffer();  // one /tf listener per process
   torque_pub_ = nh.advertise<wheelchair_msgs::WheelTorques>("wheel_torques", 10);
   reference_pub_ = pnh.advertise<geometry_msgs::PointStamped>("reference", 10);
   error_pub_ = pnh.advertise<geometry_msgs::Vector3Stamped>("tracking_error", 10);
@@ -144,7 +144,7 @@ void ControllerNodelet::onOdometry(const nav_msgs::Odometry::ConstPtr& msg) {
 std::optional<PoseMeasurement> ControllerNodelet::lookupPose() {
   try {
     const geometry_msgs::TransformStamped t =
-        tf_buffer_.lookupTransform(map_frame_, base_frame_, ros::Time(0));
+        tf_buffer_->lookupTransform(map_frame_, base_frame_, ros::Time(0));
     return PoseMeasurement{
         t.header.stamp.toSec(),
         {t.transform.translation.x, t.transform.translation.y, yawOf(t.transform.rotation)}};
