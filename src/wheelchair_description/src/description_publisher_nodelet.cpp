@@ -1,5 +1,6 @@
 // The chair's robot model: /robot_description from the chair file, fixed joints on /tf_static,
-// wheel joints from /joint_states on /tf (angle zero until the first message).
+// wheel joints from /joint_states on /tf (angle zero until the first message) at most at
+// ~publish_frequency.
 #include <wheelchair_description/chair_params.h>
 #include <wheelchair_description/package_paths.h>
 #include <wheelchair_description/urdf_generator.h>
@@ -67,7 +68,10 @@ class DescriptionPublisherNodelet : public nodelet::Nodelet {
       it->second.position = msg->position[i];
     }
     last_message_ = ros::Time::now();
-    publishMovingJoints(msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp);
+    const ros::Time stamp = msg->header.stamp.isZero() ? last_message_ : msg->header.stamp;
+    // At most publish_frequency, not at every /joint_states (the base driver's 50 Hz): only
+    // rviz needs the wheel angles, and every /tf message wakes every tf listener.
+    if (stamp - last_stamp_ >= period_) publishMovingJoints(stamp);
   }
 
   /// Keeps the wheels in the tree while no joint_states arrive (at their last angles, stamped

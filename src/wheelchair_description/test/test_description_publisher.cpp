@@ -6,9 +6,11 @@
 #include <sensor_msgs/JointState.h>
 #include <tf2/LinearMath/Matrix3x3.h>
 #include <tf2/LinearMath/Quaternion.h>
+#include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/transform_listener.h>
 #include <urdf/model.h>
 
+#include <atomic>
 #include <cmath>
 
 using namespace wheelchair_description;
@@ -86,6 +88,37 @@ TEST(DescriptionPublisher, WheelsStartAtZeroAndFollowJointStates) {
   EXPECT_NEAR(2.0 * std::atan2(right.transform.rotation.y, right.transform.rotation.w), -angle,
               1e-9);
   EXPECT_NEAR(right.transform.translation.y, -p.half_track, 1e-9);
+}
+
+// Every /tf message wakes every tf listener: the wheels (for rviz only) go out at most at
+// ~publish_frequency (default 20 Hz), not at each of the base driver's 50 Hz /joint_states.
+TEST(DescriptionPublisher, WheelJointsAtMostAtPublishFrequency) {
+  ros::NodeHandle nh;
+  std::atomic<int> wheel_messages{0};
+  ros::Subscriber sub =
+      nh.subscribe<tf2_msgs::TFMessage>("/tf", 100, [&](const tf2_msgs::TFMessage::ConstPtr& msg) {
+        for (const auto& t : msg->transforms)
+          if (t.child_frame_id == "left_wheel") ++wheel_messages;
+      });
+  ros::Publisher pub = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+  const ros::WallTime connect_deadline = ros::WallTime::now() + ros::WallDuration(10.0);
+  while ((pub.getNumSubscribers() == 0 || sub.getNumPublishers() == 0) &&
+         ros::WallTime::now() < connect_deadline)
+    ros::WallDuration(0.05).sleep();
+  const double seconds = 2.0, joint_rate = 50.0, publish_frequency = 20.0;
+  ros::WallDuration(0.2).sleep();
+  wheel_messages = 0;
+  for (int i = 0; i < static_cast<int>(seconds * joint_rate); ++i) {
+    sensor_msgs::JointState msg;
+    msg.header.stamp = ros::Time::now();
+    msg.name = {"left_wheel_joint", "right_wheel_joint"};
+    msg.position = {0.01 * i, -0.01 * i};
+    pub.publish(msg);
+    ros::WallDuration(1.0 / joint_rate).sleep();
+  }
+  ros::WallDuration(0.1).sleep();
+  EXPECT_LE(wheel_messages, seconds * publish_frequency + 2);  // was one per joint_states: 100
+  EXPECT_GE(wheel_messages, seconds * publish_frequency / 2);  // still following them
 }
 
 int main(int argc, char** argv) {
