@@ -173,7 +173,7 @@ def flat():
     for name, x, y, yaw in [("sofa", 3.20, 1.00, 180), ("living_centre", 3.00, 2.20, 0),
                             ("coffee_table", 1.50, 3.20, -90), ("bookshelf", 1.25, 4.10, 180),
                             ("tv", 2.00, 4.85, 90), ("dining_table", 2.90, 3.30, 0),
-                            ("dining_chair", 4.20, 4.50, -90), ("armchair", 5.20, 2.00, -90),
+                            ("dining_chair", 4.20, 4.50, -90), ("armchair", 5.30, 1.90, -90),
                             ("living_door", 5.10, 4.90, 90)]:
         w.place("living_room", name, x, y, yaw)
     for name, x, y, yaw in [("sink", 7.50, 1.50, -90), ("stove", 8.50, 1.60, 0),
