@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The rider of bench/system: waits for the chair, sets its pose, sends one goal and waits for
-the controller's goal_reached (or abort, collision, or the window). Prints one event per line
+the controller's goal_reached (or abort, collision, or the window), announcing "driving" when the
+controller starts to follow the plan (aligning/tracking). Prints one event per line
 on stdout ("<event> <wall time> <sim time> [detail]") for the measuring script to time its
 /proc samples against; uses the system tests' Scenario harness (test/system/scenario.py)."""
 import argparse
@@ -21,7 +22,7 @@ def event(name, detail=""):
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--start", default="living_centre")
-    parser.add_argument("--goal", default="guest_door")
+    parser.add_argument("--goal", default="kitchen_door")  # the demo's destination
     parser.add_argument("--window", type=float, default=30.0, help="wall seconds of driving at most")
     parser.add_argument("--ready-timeout", type=float, default=180.0)
     args = parser.parse_args()
@@ -38,8 +39,13 @@ def main():
     since = rospy.get_time()
     scenario.send_goal(*place(args.goal))
     event("goal_sent", args.goal)
-    scenario.wait(lambda: scenario.controller_says("goal_reached", since) or
-                  scenario.controller_says("aborted", since) or scenario.collided, args.window)
+    ended = lambda: (scenario.controller_says("goal_reached", since) or  # noqa: E731
+                     scenario.controller_says("aborted", since) or scenario.collided)
+    scenario.wait(lambda: scenario.controller_says("aligning", since) or
+                  scenario.controller_says("tracking", since) or ended(), args.window)
+    if not ended():
+        event("driving")
+    scenario.wait(ended, args.window)
     outcome = ("goal_reached" if scenario.controller_says("goal_reached", since) else
                "collided" if scenario.collided else
                "aborted" if scenario.controller_says("aborted", since) else "window_end")
