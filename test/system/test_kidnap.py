@@ -15,7 +15,12 @@ from scenario import Scenario, place
 
 START = (3.0, 2.2, 0.0)  # living_centre
 GOAL = "kitchen_door"
-KIDNAP = (2.5, 3.4, math.pi)  # west of the dining table, facing the other way (collision-free)
+# West of the dining table, facing away from the goal. The chair coasts up to ~0.4 m after the
+# teleport before it stops; from here it still has >= 1.3 m of room all round, so turning on the
+# spot (the body reaches 0.86 m behind the axle) stays possible. From (2.5, 3.4) a 0.3 m coast
+# left it 0.88 m from the coffee table and the planner refused to turn it ("no footprint-feasible
+# path"), 2 of 8 runs.
+KIDNAP = (2.3, 4.0, math.pi)
 
 
 class Kidnap(unittest.TestCase):
