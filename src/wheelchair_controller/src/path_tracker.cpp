@@ -90,8 +90,7 @@ std::string PathTracker::setPath(const std::vector<Pose2>& path) {
 }
 
 std::string PathTracker::setPreparedPath(const PreparedPath& prepared) {
-  const std::string held = holdReason();
-  if (!held.empty()) return "path ignored during " + held;
+  if (std::string refused = refuseIfHeld(); !refused.empty()) return refused;
   if (!prepared.rejection.empty() || !prepared.path || !prepared.trajectory) {
     const std::string reason =
         prepared.rejection.empty() ? "path not prepared" : prepared.rejection;
@@ -122,6 +121,14 @@ void PathTracker::hold(const std::string& source, const std::string& reason) {
 void PathTracker::release(const std::string& source) { holds_.erase(source); }
 
 std::string PathTracker::holdReason() const { return holds_.empty() ? "" : holds_.begin()->second; }
+
+std::string PathTracker::refuseIfHeld() {
+  const std::string held = holdReason();
+  if (held.empty()) return "";
+  const std::string refused = "path ignored during " + held;
+  abort(refused);  // at rest: a stop from standstill, only to put the refusal on the status
+  return refused;
+}
 
 void PathTracker::beginStop(const std::string& reason, const Eigen::Vector2d& eta,
                             TrackerState end_state) {

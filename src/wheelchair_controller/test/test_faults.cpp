@@ -183,6 +183,27 @@ TEST(Faults, ReleasedHoldResumesOnlyWithANewPath) {
   EXPECT_FALSE(resumed.command.brake);
 }
 
+// A goal given while localization is lost (e.g. before the first scan after a carer's
+// re-initialization) must not vanish silently: the status the rider sees says it was ignored.
+TEST(Faults, PathDuringAHoldIsRefusedOnTheStatus) {
+  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  wc::PathTracker tracker(p, wc::TrackerConfig{});
+  tracker.hold("localization", "localization lost: waiting for the first scan");
+  double t = 0.0;
+  for (; t < 1.0; t += 0.02) tracker.update(t, wc::PoseMeasurement{t, {0, 0, 0}}, {t, {0, 0}});
+  ASSERT_EQ(tracker.state(), wc::TrackerState::kAborted);
+  const std::string refused =
+      tracker.setPath(wc::PathBuilder({0.0, 0.0, 0.0}).straight(2.0).poses());
+  EXPECT_NE(refused.find("path ignored during localization lost"), std::string::npos) << refused;
+  wc::TrackerOutput out;
+  for (; t < 2.0; t += 0.02)
+    out = tracker.update(t, wc::PoseMeasurement{t, {0, 0, 0}}, {t, {0, 0}});
+  EXPECT_EQ(out.state, wc::TrackerState::kAborted);
+  EXPECT_EQ(out.reason, refused);
+  EXPECT_TRUE(out.command.brake);
+  EXPECT_EQ(out.command.torque, Eigen::Vector2d::Zero());
+}
+
 TEST(Faults, PathPreparedElsewhereIsSwappedInByTheNextStep) {
   const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
   wc::PathTracker tracker(p, wc::TrackerConfig{});

@@ -116,6 +116,10 @@ class PathTracker {
   void release(const std::string& source);
   /// Reason of the first active hold (empty: none).
   std::string holdReason() const;
+  /// While a hold is active a new path is refused where the rider sees it: the status says
+  /// "path ignored during <hold>" (a stop already running keeps its first reason). Returns
+  /// that refusal, or empty when no hold is active.
+  std::string refuseIfHeld();
   /// Counts the stops begun: a path prepared before a stop must not undo it.
   uint64_t stopCount() const { return stop_count_; }
   /// One control step at time `now` [s]: latest pose (nullopt: none, e.g. lost

@@ -74,13 +74,12 @@ void ControllerNodelet::onPath(const nav_msgs::Path::ConstPtr& msg) {
     poses.emplace_back(p.pose.position.x, p.pose.position.y, yawOf(p.pose.orientation));
   std::lock_guard<std::mutex> lock(mutex_);
   ++path_sequence_;  // a newer path supersedes one still being built
-  std::string rejection = tracker_->holdReason();
-  if (!rejection.empty()) {
-    rejection = "path ignored during " + rejection;
-  } else if (!msg->header.frame_id.empty() && msg->header.frame_id != map_frame_) {
+  std::string rejection = tracker_->refuseIfHeld();  // shows on the status when refused
+  if (rejection.empty() && !msg->header.frame_id.empty() && msg->header.frame_id != map_frame_) {
     rejection = "path in frame '" + msg->header.frame_id + "', expected '" + map_frame_ + "'";
     tracker_->abort(rejection);
-  } else {
+  }
+  if (rejection.empty()) {
     // Cheap checks now (a NaN or empty path stops at once), the reference on the worker.
     rejection = pathRejectionReason(poses, kMinPathLength);
     if (!rejection.empty()) {
