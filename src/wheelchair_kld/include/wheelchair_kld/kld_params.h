@@ -35,8 +35,8 @@ struct MeasurementParams {
 
 struct KldParams {
   // KLD-sampling (Fox 2003).
-  double epsilon = 0.05;       ///< K-L error bound
-  double delta = 0.01;         ///< 1 - confidence
+  double epsilon = 0.05;  ///< K-L error bound
+  double delta = 0.01;    ///< 1 - confidence
   /// [m] histogram bin size (amcl's 0.5 m: on the Intel log 0.25 m needed 2.4x the particles
   /// for the same accuracy, 9.3 vs 9.4 cm; office global localization 20/20 with both)
   double bin_xy = 0.5;
