@@ -55,6 +55,28 @@ double distanceToSegment(double px, double py, const Vertex& a, const Vertex& b)
   return std::hypot(a[0] + t * dx - px, a[1] + t * dy - py);
 }
 
+/// The part of the polygon with x in [x0, x1] (Sutherland-Hodgman against the two lines): its
+/// vertices span a convex hull that contains that part (also for a non-convex polygon).
+std::vector<Vertex> clipToSlab(const std::vector<Vertex>& poly, double x0, double x1) {
+  std::vector<Vertex> out = poly;
+  for (const double sign : {1.0, -1.0}) {  // keep x >= x0, then x <= x1
+    const double edge = sign > 0.0 ? x0 : x1;
+    std::vector<Vertex> in;
+    in.swap(out);
+    for (size_t i = 0; i < in.size(); ++i) {
+      const Vertex& a = in[i];
+      const Vertex& b = in[(i + 1) % in.size()];
+      const bool a_in = sign * (a[0] - edge) >= 0.0, b_in = sign * (b[0] - edge) >= 0.0;
+      if (a_in) out.push_back(a);
+      if (a_in != b_in) {
+        const double t = (edge - a[0]) / (b[0] - a[0]);
+        out.push_back({edge, a[1] + t * (b[1] - a[1])});
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 FootprintChecker::FootprintChecker(const ConfigSpace& cspace, const std::vector<Vertex>& polygon)
@@ -86,6 +108,25 @@ FootprintChecker::FootprintChecker(const ConfigSpace& cspace, const std::vector<
     y0 = std::min(y0, v[1]);
     y1 = std::max(y1, v[1]);
   }
+  // Cover: slabs along x about half the body's width long, each in the smallest disc about its
+  // bounding box's centre (the maximum distance over a polygon is at a vertex).
+  const int slabs = std::max(1, static_cast<int>(std::ceil((x1 - x0) / (0.5 * (y1 - y0)))));
+  for (int i = 0; i < slabs; ++i) {
+    const std::vector<Vertex> part =
+        clipToSlab(polygon, x0 + (x1 - x0) * i / slabs, x0 + (x1 - x0) * (i + 1) / slabs);
+    if (part.empty()) continue;
+    double bx0 = 1e9, bx1 = -1e9, by0 = 1e9, by1 = -1e9;
+    for (const Vertex& v : part) {
+      bx0 = std::min(bx0, v[0]);
+      bx1 = std::max(bx1, v[0]);
+      by0 = std::min(by0, v[1]);
+      by1 = std::max(by1, v[1]);
+    }
+    Disc disc{{0.5 * (bx0 + bx1), 0.5 * (by0 + by1)}, 0.0};
+    for (const Vertex& v : part)
+      disc.radius = std::max(disc.radius, std::hypot(v[0] - disc.centre[0], v[1] - disc.centre[1]));
+    cover_.push_back(disc);
+  }
   const double h = 0.7 * res;
   for (double x = x0 + 0.5 * h; x < x1; x += h) {
     Column col;
@@ -106,6 +147,10 @@ FootprintContact FootprintChecker::clearance(const Pose2D& pose, double stop_bel
       cspace_.distanceAt(pose.x, pose.y) - circumscribed_radius_ - 0.5 * cspace_.resolution();
   if (bound >= enough) return {bound, pose.x, pose.y};
   const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+  if (enough < 1e9) {
+    const FootprintContact covered = coverBound(pose, c, s);
+    if (covered.clearance >= enough) return covered;
+  }
   FootprintContact best;
   best.clearance = 1e9;
   for (const Vertex& v : boundary_) {
@@ -127,6 +172,20 @@ FootprintContact FootprintChecker::clearance(const Pose2D& pose, double stop_bel
     }
   }
   return best;
+}
+
+FootprintContact FootprintChecker::coverBound(const Pose2D& pose, double c, double s) const {
+  // A body point within r of a disc centre is at least (distance there - r) from obstacles;
+  // half a cell less for the bilinear interpolation, as for the enclosing disc.
+  FootprintContact worst;
+  worst.clearance = 1e9;
+  for (const Disc& d : cover_) {
+    const double x = pose.x + c * d.centre[0] - s * d.centre[1];
+    const double y = pose.y + s * d.centre[0] + c * d.centre[1];
+    const double bound = cspace_.distanceAt(x, y) - d.radius - 0.5 * cspace_.resolution();
+    if (bound < worst.clearance) worst = {bound, x, y};
+  }
+  return worst;
 }
 
 }  // namespace wheelchair_harmonic_planner

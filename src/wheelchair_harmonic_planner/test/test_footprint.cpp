@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace wheelchair_harmonic_planner;
 using wheelchair_mapping::OccupancyMap;
@@ -144,6 +145,49 @@ TEST(FootprintChecker, AnObstacleCellInsideTheBodyIsACollision) {
   // (x = 2.70) to the cell's right edge.
   const double cell_edge = map.origin_x + (ix + 1) * map.resolution;
   EXPECT_NEAR(checker.clearance({3.0, 3.0, M_PI}).clearance, 2.70 - cell_edge, 0.013);
+}
+
+// The cheap early answer of the sweep check (a cover of the body by four discs) is a lower
+// bound of the clearance: against the full computation and the brute-force box-vs-cell distance
+// at random poses
+// among random blocks, and in a 1.8 m corridor, where it answers although the one disc
+// enclosing the body (0.86 m radius) is not clear.
+TEST(FootprintChecker, DiscCoverGivesALowerBoundOfTheClearance) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coord(0.5, 7.5), angle(-M_PI, M_PI);
+  OccupancyMap map = carved(8.0, {{0.1, 7.9, 0.1, 7.9}});
+  for (int b = 0; b < 12; ++b) {
+    int ix, iy;
+    map.worldToCell(coord(rng), coord(rng), ix, iy);
+    for (int dy = 0; dy < 4; ++dy)
+      for (int dx = 0; dx < 4; ++dx) map.at(ix + dx, iy + dy) = wheelchair_mapping::kOccupied;
+  }
+  const ConfigSpace cs(map, ConfigSpaceParams());
+  const FootprintChecker checker(cs, kChair);
+  int early = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Pose2D pose{coord(rng), coord(rng), angle(rng)};
+    const FootprintContact bound = checker.clearance(pose, -1e9, 0.30);
+    if (bound.clearance < 0.30) continue;  // not answered early: the full computation
+    ++early;
+    // Below the checker's full answer, and below the true distance up to the checker's stated
+    // error (1.3 cm: to a cell's corner the distance field is up to (sqrt(2) - 1) / 2 cell =
+    // 1.04 cm too large, plus its bilinear interpolation).
+    EXPECT_LE(bound.clearance, checker.clearance(pose).clearance + 1e-9) << pose.x << " " << pose.y;
+    EXPECT_LE(bound.clearance, bruteClearance(map, pose) + 0.013) << pose.x << " " << pose.y;
+  }
+  EXPECT_GT(early, 20);
+  const OccupancyMap corridor = carved(6.0, {{0.1, 5.9, 2.0, 3.8}});
+  const ConfigSpace ccs(corridor, ConfigSpaceParams());
+  const FootprintChecker cchecker(ccs, kChair);
+  for (const double yaw : {0.0, 0.3, M_PI}) {
+    const Pose2D pose{3.0, 2.9, yaw};
+    const double full = cchecker.clearance(pose).clearance;
+    const double quick = cchecker.clearance(pose, -1e9, 0.30).clearance;
+    EXPECT_GE(quick, 0.30) << "yaw " << yaw;
+    EXPECT_LT(quick, full - 0.02) << "a bound, not the full computation, yaw " << yaw;
+    EXPECT_LE(quick, bruteClearance(corridor, pose)) << "yaw " << yaw;
+  }
 }
 
 TEST(Sweep, DetectsTheTailSwingInAnLCornerThatTheDiscModelAccepts) {

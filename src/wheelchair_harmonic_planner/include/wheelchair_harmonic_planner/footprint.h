@@ -37,7 +37,8 @@ class FootprintChecker {
   /// half a cell apart and bilinearly interpolated (error below ~1 cm); an obstacle cell inside
   /// the polygon gives -resolution. Stops early once below `stop_below` (then the value is only
   /// known to be below it), and returns a lower bound at once when the disc about base_link
-  /// that encloses the body is clear by at least `enough`.
+  /// that encloses the body, or else every disc of a cover of the body by a few smaller discs,
+  /// is clear by at least `enough`.
   FootprintContact clearance(const Pose2D& pose, double stop_below = -1e9,
                              double enough = 1e9) const;
 
@@ -56,11 +57,19 @@ class FootprintChecker {
     double radius = 0.0;
     std::vector<Vertex> points;
   };
+  /// A disc in base_link; the cover's discs together contain the polygon.
+  struct Disc {
+    Vertex centre;
+    double radius = 0.0;
+  };
+  /// Lower bound of the clearance from the cover: the smallest disc clearance, with its centre.
+  FootprintContact coverBound(const Pose2D& pose, double c, double s) const;
 
   const ConfigSpace& cspace_;
   std::vector<Vertex> polygon_;
   std::vector<Vertex> boundary_;  ///< boundary samples in base_link
   std::vector<Column> columns_;
+  std::vector<Disc> cover_;  ///< slabs along x about half the body's width long
   double circumscribed_radius_ = 0.0;
   double inscribed_radius_ = 0.0;
 };
