@@ -129,6 +129,7 @@ std::shared_ptr<const LogLdlt> directFactor(const ConfigSpace& cs,
     cache->factor = factor;
     cache->cspace = &cs;
     cache->use_conductance = params.use_conductance;
+    cache->timing = factor->timing();
     ++cache->factorizations;
   }
   return factor;

@@ -1,12 +1,22 @@
 #include "log_cholesky.h"
 
+#include "large_blocks.h"
+
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <limits>
 
 namespace wheelchair_harmonic_planner {
 
 namespace {
+
+/// Process CPU time [s] (the phases' profile).
+double cpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 constexpr double kNegInf = -std::numeric_limits<double>::infinity();
 /// Block exponent of the solves' scaled numbers: value = m * 2^(kChunk * b).
@@ -44,6 +54,8 @@ void accumulate(double c, long b, ScaledValue& acc) {
 }  // namespace
 
 LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance) : width_(cs.width()) {
+  double t0 = cpuSeconds();
+  recycleLargeCholmodBlocks();
   cholmod_start(&common_);
   const auto& free = cs.freeMask();
   id_.assign(free.size(), -1);
@@ -102,9 +114,17 @@ LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance) : width_(cs.width(
   common_.postorder = 1;
   common_.supernodal = CHOLMOD_SIMPLICIAL;
   common_.final_ll = 0;  // keep LDL^T
+  const auto lap = [&t0](double& phase) {
+    const double t = cpuSeconds();
+    phase = t - t0;
+    t0 = t;
+  };
+  lap(timing_.assemble);
   factor_ = cholmod_analyze(&a, &common_);
+  lap(timing_.analyze);
   if (!factor_ || common_.status != CHOLMOD_OK) return;
   cholmod_factorize(&a, factor_, &common_);
+  lap(timing_.factorize);
   if (common_.status != CHOLMOD_OK || factor_->minor != static_cast<size_t>(n)) return;
   const int* lp = static_cast<const int*>(factor_->p);
   const double* lx = static_cast<const double*>(factor_->x);
@@ -180,27 +200,27 @@ double LogLdlt::solve(size_t goal, std::vector<double>& log_u) const {
     log_u[cells_[perm[k]]] = std::log(xk.m) + kChunk * M_LN2 * static_cast<double>(xk.b);
   }
   log_u[goal] = 0.0;
-  return residual(goal, perm);
+  return residual(goal);
 }
 
-double LogLdlt::residual(size_t goal, const int* perm) const {
+double LogLdlt::residual(size_t goal) const {
   // sum_j w_kj u_j / (total_k u_k) per unknown k, from the lower triangle of A (each edge once,
   // added to both of its rows); 0 for edges to obstacles (u = 0). Evaluated on the scaled
   // values: the log taken above changes log u by < 1e-15 relative.
-  std::vector<ScaledValue>& u = u_;
-  u.resize(cells_.size());
-  for (size_t k = 0; k < cells_.size(); ++k) u[perm[k]] = x_[k];
-  std::vector<double>& sum = sum_;
+  const auto u = [this](int c) -> const ScaledValue& { return x_[inverse_perm_[c]]; };
+  LargeVector<double>& sum = sum_;
   sum.assign(cells_.size(), 0.0);
   const int n = static_cast<int>(cells_.size());
   for (int c = 0; c < n; ++c) {
-    if (u[c].m == 0.0) continue;
+    const ScaledValue& uc = u(c);
+    if (uc.m == 0.0) continue;
     const double total_c = ax_[ap_[c]];  // the diagonal comes first
     for (int p = ap_[c] + 1; p < ap_[c + 1]; ++p) {
       const int r = ai_[p];
       // u_r / u_c: between edge / total and total / edge (maximum principle), no overflow.
-      const long gap = u[r].b - u[c].b;
-      const double q = u[r].m / u[c].m;
+      const ScaledValue& ur = u(r);
+      const long gap = ur.b - uc.b;
+      const double q = ur.m / uc.m;
       const double ratio = gap == 0 ? q : std::ldexp(q, kChunk * static_cast<int>(gap));
       sum[c] -= ax_[p] / total_c * ratio;
       sum[r] -= ax_[p] / ax_[ap_[r]] / ratio;
@@ -208,7 +228,7 @@ double LogLdlt::residual(size_t goal, const int* perm) const {
   }
   double worst = 0.0;
   for (int c = 0; c < n; ++c) {
-    if (cells_[c] != goal && u[c].m != 0.0) worst = std::max(worst, std::abs(sum[c] - 1.0));
+    if (cells_[c] != goal && u(c).m != 0.0) worst = std::max(worst, std::abs(sum[c] - 1.0));
   }
   return worst;
 }

@@ -17,6 +17,9 @@
 #pragma once
 
 #include <wheelchair_harmonic_planner/config_space.h>
+#include <wheelchair_harmonic_planner/harmonic_solver.h>
+
+#include "large_blocks.h"
 
 #include <cholmod.h>
 
@@ -44,6 +47,8 @@ class LogLdlt {
   LogLdlt& operator=(const LogLdlt&) = delete;
 
   bool ok() const { return ok_; }
+  /// CPU time of the constructor's phases (incl. their page faults).
+  const FactorTiming& timing() const { return timing_; }
   size_t unknowns() const { return cells_.size(); }
   /// Non-zeros of L including its diagonal (which holds D).
   size_t factorNonZeros() const;
@@ -56,20 +61,21 @@ class LogLdlt {
 
  private:
   /// The convergence criterion on the solution in x_ (factor order, u = w / w_g).
-  double residual(size_t goal, const int* perm) const;
+  double residual(size_t goal) const;
 
   long width_ = 0;
-  std::vector<size_t> cells_;  ///< grid cell of each unknown (row-major order of the free cells)
-  std::vector<int> id_;        ///< unknown of each grid cell, -1 if not free
+  LargeVector<size_t> cells_;  ///< grid cell of each unknown (row-major order of the free cells)
+  LargeVector<int> id_;        ///< unknown of each grid cell, -1 if not free
   /// Lower triangle of A, unknowns in cells_ order, compressed columns (diagonal first).
-  std::vector<int> ap_, ai_;
-  std::vector<double> ax_;
+  LargeVector<int> ap_, ai_;
+  LargeVector<double> ax_;
   cholmod_common common_;
   cholmod_factor* factor_ = nullptr;  ///< simplicial LDL^T of P A P^T, column j: D_j, L_.j
-  std::vector<int> inverse_perm_;     ///< position in the factor of each unknown
+  LargeVector<int> inverse_perm_;     ///< position in the factor of each unknown
   bool ok_ = false;
-  mutable std::vector<ScaledValue> x_, u_;  ///< per-solve scratch, reused
-  mutable std::vector<double> sum_;
+  FactorTiming timing_;
+  mutable LargeVector<ScaledValue> x_;  ///< per-solve scratch, reused
+  mutable LargeVector<double> sum_;
 };
 
 }  // namespace wheelchair_harmonic_planner

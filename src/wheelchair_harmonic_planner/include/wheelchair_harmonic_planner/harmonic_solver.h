@@ -56,6 +56,15 @@ struct HarmonicSolution {
 
 class LogLdlt;
 
+/// CPU seconds of the direct solver's map-dependent phases (incl. their page faults): the
+/// equation's assembly, CHOLMOD's symbolic analysis (AMD ordering, elimination tree, counts)
+/// and the numeric LDL^T factorization.
+struct FactorTiming {
+  double assemble = 0.0;
+  double analyze = 0.0;
+  double factorize = 0.0;
+};
+
 /// The direct solver's map-dependent part: the ordering and LDL^T factors of the equation of
 /// every free cell, which do not depend on the goal (log_cholesky.h). Kept by the caller between
 /// solves on the same ConfigSpace object, a new goal then costs two triangular solves instead of
@@ -66,6 +75,7 @@ struct HarmonicFactorCache {
   const ConfigSpace* cspace = nullptr;
   bool use_conductance = true;
   int factorizations = 0;     ///< factors computed through this cache (for tests and the bench)
+  FactorTiming timing;        ///< of the last factorization
   std::vector<double> spare;  ///< storage recycled for the next solution's log_u
   void reset() {
     factor.reset();
