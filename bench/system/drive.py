@@ -31,6 +31,9 @@ def main():
     if why:
         event("failed", why)
         return 1
+    if abs(scenario.truth[0] - rospy.get_time()) > 10.0:  # sim stamps vs this node's clock
+        event("failed", "the rider is not on the simulator's /clock (/use_sim_time unset when it started)")
+        return 1
     event("ready")
     if not scenario.initialize(*place(args.start), wall_timeout=args.ready_timeout):
         event("failed", "not localized: " + scenario.describe())
