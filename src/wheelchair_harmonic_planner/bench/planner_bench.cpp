@@ -130,8 +130,10 @@ void emitCpuSpread(const std::string& method, const std::string& metric, int rep
 }
 
 /// The default solver alone: cold (CPU time of solveHarmonic: ordering, factorization and the
-/// solves; first solve in this process), then warm, i.e. a new goal (the start cell) on the same
-/// map with the cached factors (5 repetitions), and the gradient descent on that field.
+/// solves; after the planner's cold plan, whose factor is still held), then warm, i.e. a new goal
+/// (the start cell) on the same map with the cached factors (5 repetitions), and the gradient
+/// descent on that field; the factorization's phases (assemble, analyze, factorize); then cold
+/// again on freed factors.
 void solveColdAndWarm(const ConfigSpace& cs, const Pose2D& start, const Pose2D& goal) {
   int gx, gy, sx, sy;
   cs.worldToCell(goal.x, goal.y, gx, gy);
@@ -141,6 +143,12 @@ void solveColdAndWarm(const ConfigSpace& cs, const Pose2D& start, const Pose2D& 
   const HarmonicSolution sol = solveHarmonic(cs, gx, gy, HarmonicSolverParams(), nullptr, &cache);
   emit("harmonic", "solve_cpu_time", (cpuSeconds() - cpu0) * 1e3, "ms");
   emit("harmonic", "solve_converged", sol.converged ? 1.0 : 0.0, "bool");
+  const auto emitPhases = [&](const std::string& prefix) {
+    emit("harmonic", prefix + "assemble_cpu_time", cache.timing.assemble * 1e3, "ms");
+    emit("harmonic", prefix + "analyze_cpu_time", cache.timing.analyze * 1e3, "ms");
+    emit("harmonic", prefix + "factorize_cpu_time", cache.timing.factorize * 1e3, "ms");
+  };
+  emitPhases("factor_");
   HarmonicSolution back;
   emitCpuSpread("harmonic", "warm_solve_cpu_time", 5, [&] {
     if (!back.log_u.empty()) cache.spare = std::move(back.log_u);
@@ -151,6 +159,13 @@ void solveColdAndWarm(const ConfigSpace& cs, const Pose2D& start, const Pose2D& 
   DescentResult d;
   emitCpuSpread("harmonic", "descent_cpu_time", 5, [&] { d = descend(cs, back, goal.x, goal.y); });
   emit("harmonic", "descent_reached_goal", d.reached_goal ? 1.0 : 0.0, "bool");
+  // The cold solve once more after the factors were freed: a new map in a running planner,
+  // whose previous factorization's memory is recycled (no fresh pages).
+  cache.reset();
+  const double cpu1 = cpuSeconds();
+  solveHarmonic(cs, gx, gy, HarmonicSolverParams(), nullptr, &cache);
+  emit("harmonic", "new_map_solve_cpu_time", (cpuSeconds() - cpu1) * 1e3, "ms");
+  emitPhases("new_map_factor_");
 }
 
 /// Whole plans with the planner plugin on one map: the trip cold, then (after a plan to another
@@ -223,7 +238,9 @@ int main(int argc, char** argv) {
     goal = mazeEndPose(map, idx(goal.x), idx(goal.y), true);
   }
   const ParameterMap common{{"inscribed_radius", "0.31"}, {"seed", "1"}};
+  const double cspace_cpu0 = cpuSeconds();
   const ConfigSpace cs(map, configSpaceParams(common));
+  emit("harmonic", "cspace_cpu_time", (cpuSeconds() - cspace_cpu0) * 1e3, "ms");
   const double shortest = gridShortest(cs, start, goal);
   emit("grid_dijkstra", "length", shortest, "m");
   std::vector<std::pair<std::string, std::vector<Pose2D>>> drawn;
