@@ -55,6 +55,21 @@ double distanceToSegment(double px, double py, const Vertex& a, const Vertex& b)
   return std::hypot(a[0] + t * dx - px, a[1] + t * dy - py);
 }
 
+struct Box {
+  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+};
+
+Box boundingBox(const std::vector<Vertex>& points) {
+  Box b;
+  for (const Vertex& v : points) {
+    b.x0 = std::min(b.x0, v[0]);
+    b.x1 = std::max(b.x1, v[0]);
+    b.y0 = std::min(b.y0, v[1]);
+    b.y1 = std::max(b.y1, v[1]);
+  }
+  return b;
+}
+
 /// The part of the polygon with x in [x0, x1] (Sutherland-Hodgman against the two lines): its
 /// vertices span a convex hull that contains that part (also for a non-convex polygon).
 std::vector<Vertex> clipToSlab(const std::vector<Vertex>& poly, double x0, double x1) {
@@ -101,28 +116,17 @@ FootprintChecker::FootprintChecker(const ConfigSpace& cspace, const std::vector<
   }
   // Interior: a lattice of 0.7 cell spacing (every cell the polygon covers holds a sample),
   // grouped in columns of constant x.
-  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
-  for (const Vertex& v : polygon) {
-    x0 = std::min(x0, v[0]);
-    x1 = std::max(x1, v[0]);
-    y0 = std::min(y0, v[1]);
-    y1 = std::max(y1, v[1]);
-  }
-  // Cover: slabs along x about half the body's width long, each in the smallest disc about its
-  // bounding box's centre (the maximum distance over a polygon is at a vertex).
+  const Box box = boundingBox(polygon);
+  const double x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
+  // Cover: slabs along x about half the body's width long, each in the disc about its bounding
+  // box's centre through its farthest vertex (the maximum distance over a polygon is at one).
   const int slabs = std::max(1, static_cast<int>(std::ceil((x1 - x0) / (0.5 * (y1 - y0)))));
   for (int i = 0; i < slabs; ++i) {
     const std::vector<Vertex> part =
         clipToSlab(polygon, x0 + (x1 - x0) * i / slabs, x0 + (x1 - x0) * (i + 1) / slabs);
     if (part.empty()) continue;
-    double bx0 = 1e9, bx1 = -1e9, by0 = 1e9, by1 = -1e9;
-    for (const Vertex& v : part) {
-      bx0 = std::min(bx0, v[0]);
-      bx1 = std::max(bx1, v[0]);
-      by0 = std::min(by0, v[1]);
-      by1 = std::max(by1, v[1]);
-    }
-    Disc disc{{0.5 * (bx0 + bx1), 0.5 * (by0 + by1)}, 0.0};
+    const Box b = boundingBox(part);
+    Disc disc{{0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}, 0.0};
     for (const Vertex& v : part)
       disc.radius = std::max(disc.radius, std::hypot(v[0] - disc.centre[0], v[1] - disc.centre[1]));
     cover_.push_back(disc);
