@@ -7,6 +7,7 @@ Waits are in wall seconds (generous: the machine is loaded), measurements in sim
 import math
 import threading
 import time
+from typing import Dict, NamedTuple
 
 import rospkg
 import rospy
@@ -37,6 +38,24 @@ def yaw_of(q):
 
 def angle_diff(a, b):
     return math.remainder(a - b, 2.0 * math.pi)
+
+
+LOGS = ("controller", "announcements", "safety")  # the Scenario's (t, text) logs
+
+
+class Mark(NamedTuple):
+    """A `since` for the questions of Scenario (Scenario.mark()): the simulated time and how
+    long each log was. A log is cut at that position, not at that time: the test's clock moves
+    in the simulator's 5 ms steps and lags on a loaded machine, so a message received before
+    the mark can carry the mark's own time. Cut by time, one leg's final 'goal_reached' (or
+    'aborted') also counted as the next leg's, read right after that leg's drive began."""
+    time: float
+    lengths: Dict[str, int]
+
+
+def time_of(since):
+    """The simulated time [s] of a `since` (a Mark or a time)."""
+    return since.time if isinstance(since, Mark) else since
 
 
 class Scenario:
@@ -168,22 +187,29 @@ class Scenario:
     def teleport(self, x, y, yaw):
         return rospy.ServiceProxy("/sim/teleport", SetPose)(x, y, yaw)
 
-    # ---- questions ------------------------------------------------------------------------------
-    def controller_says(self, prefix, since=0.0):
+    # ---- questions: `since` is a Mark (exact) or a simulated time [s] ---------------------------
+    def mark(self):
+        """Now, as a `since` that leaves out every message already received."""
         with self.lock:
-            return any(t >= since and s.startswith(prefix) for t, s in self.controller)
+            return Mark(rospy.get_time(), {log: len(getattr(self, log)) for log in LOGS})
+
+    def received(self, log, since=0.0):
+        """The (t, text) records of `log` (one of LOGS) received since `since`."""
+        with self.lock:
+            records = list(getattr(self, log))
+        if isinstance(since, Mark):
+            return records[since.lengths[log]:]
+        return [(t, text) for t, text in records if t >= since]
+
+    def controller_says(self, prefix, since=0.0):
+        return any(s.startswith(prefix) for _, s in self.received("controller", since))
 
     def announced(self, text, since=0.0):
-        with self.lock:
-            return any(t >= since and text in s for t, s in self.announcements)
+        return any(text in s for _, s in self.received("announcements", since))
 
     def safety_stop(self, since=0.0):
         """The first stop reason published since `since`, or ""."""
-        with self.lock:
-            for t, s in self.safety:
-                if t >= since and s != "safe":
-                    return s
-        return ""
+        return next((s for _, s in self.received("safety", since) if s != "safe"), "")
 
     def error_to(self, x, y, yaw):
         """(distance [m], heading error [rad]) of the true pose to (x, y, yaw)."""
@@ -194,26 +220,26 @@ class Scenario:
         return self.truth is not None and abs(self.truth[4]) < 0.01 and abs(self.truth[5]) < 0.02
 
     def travelled(self, since):
-        """Path length of the true trajectory since sim time `since`."""
+        """Path length of the true trajectory since `since`."""
         with self.lock:
-            points = [(x, y) for t, x, y in self.truth_path if t >= since]
+            points = [(x, y) for t, x, y in self.truth_path if t >= time_of(since)]
         return sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(points, points[1:]))
 
     def start_driving(self, test, start, name, metres):
         """Ready, localized at `start`, on the way to place `name` and `metres` driven; returns
-        the simulated time the goal was sent. Fails `test` (a TestCase) otherwise."""
+        the Mark of the goal. Fails `test` (a TestCase) otherwise."""
         test.assertEqual(self.wait_ready(), "")
         test.assertTrue(self.initialize(*start), "not localized: " + self.describe())
         accepted, message = self.go_to_place(name)
         test.assertTrue(accepted, message)
-        t_go = rospy.get_time()
+        t_go = self.mark()
         test.assertTrue(self.wait(lambda: self.travelled(t_go) > metres, 60.0),
                         "the chair did not start: " + self.describe(t_go))
         return t_go
 
     def drive_to_place(self, name, wall_timeout):
         """go_to_place + wait for the controller's goal_reached (or a stop/abort)."""
-        since = rospy.get_time()
+        since = self.mark()
         accepted, message = self.go_to_place(name)
         if not accepted:
             return False, message
@@ -223,10 +249,9 @@ class Scenario:
 
     def describe(self, since=0.0):
         """What happened since `since`, for failure messages."""
-        with self.lock:
-            c = [s for t, s in self.controller if t >= since][-6:]
-            a = [s for t, s in self.announcements if t >= since][-6:]
-            f = [s for t, s in self.safety if t >= since][-4:]
+        c = [s for _, s in self.received("controller", since)][-6:]
+        a = [s for _, s in self.received("announcements", since)][-6:]
+        f = [s for _, s in self.received("safety", since)][-4:]
         pose = "none" if self.truth is None else "(%.2f, %.2f, %.2f)" % self.truth[1:4]
         return (f"controller {c}; announced {a}; safety {f}; localized '{self.localized}'; "
                 f"true pose {pose}; collided {self.collided}")

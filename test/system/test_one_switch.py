@@ -50,12 +50,19 @@ class OneSwitch(unittest.TestCase):
         self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
         figures = []
         for name, room in ROUTE:
-            since = rospy.get_time()
+            since = s.mark()  # not a time: the last leg's end can carry this leg's start time
+            last = s.received("controller")[-1:]
+            rospy.loginfo("one switch: %s marked at %.3f s, last status %s", name, since.time,
+                          "at %.3f s (%s)" % last[0] if last else "none")
             presses, steps = self.choose(s, name, room)
             self.assertLessEqual(presses, 3, name)
             self.assertTrue(s.wait(lambda: s.controller_says("goal_reached", since) or
                                    s.controller_says("aborted", since), 120.0),
                             f"{name}: the drive did not end: " + s.describe(since))
+            # The end belongs to this drive: the controller drove (aligning or tracking) first.
+            statuses = [text for _, text in s.received("controller", since)]
+            self.assertIn(statuses[0], ("aligning", "tracking"),
+                          f"{name}: not this drive's end: " + s.describe(since))
             # Judged by the simulator's truth: the controller may end with "goal not reached
             # within tolerance" a few mm / degrees off (reported to the controller's owner).
             self.assertTrue(s.wait(s.at_rest, 20.0))
