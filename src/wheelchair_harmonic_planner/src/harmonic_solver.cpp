@@ -124,8 +124,11 @@ std::shared_ptr<const LogLdlt> directFactor(const ConfigSpace& cs,
   reused = cache && cache->factor && cache->cspace == &cs &&
            cache->use_conductance == params.use_conductance;
   if (reused) return cache->factor;
-  auto factor = std::make_shared<const LogLdlt>(cs, params.use_conductance);
+  auto factor = std::make_shared<const LogLdlt>(cs, params.use_conductance,
+                                                cache ? cache->ordering.get() : nullptr);
   if (cache) {
+    if (!factor->orderingReused()) cache->ordering = factor->ordering(cs);
+    cache->orderings_reused += factor->orderingReused() ? 1 : 0;
     cache->factor = factor;
     cache->cspace = &cs;
     cache->use_conductance = params.use_conductance;

@@ -53,7 +53,8 @@ void accumulate(double c, long b, ScaledValue& acc) {
 
 }  // namespace
 
-LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance) : width_(cs.width()) {
+LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance, const FactorOrdering* previous)
+    : width_(cs.width()) {
   double t0 = cpuSeconds();
   recycleLargeCholmodBlocks();
   cholmod_start(&common_);
@@ -109,9 +110,13 @@ LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance) : width_(cs.width(
   a.dtype = CHOLMOD_DOUBLE;
   a.sorted = 1;
   a.packed = 1;
-  common_.nmethods = 1;  // AMD only (METIS/NESDIS give more fill on these grids and cost more)
-  common_.method[0].ordering = CHOLMOD_AMD;
-  common_.postorder = 1;
+  // AMD only (METIS/NESDIS give more fill on these grids and cost more), or the previous map's
+  // ordering (AMD and postorder, so already postordered) if its free cells are the same.
+  ordering_reused_ = previous && previous->free_mask == free &&
+                     previous->permutation.size() == static_cast<size_t>(n);
+  common_.nmethods = 1;
+  common_.method[0].ordering = ordering_reused_ ? CHOLMOD_GIVEN : CHOLMOD_AMD;
+  common_.postorder = ordering_reused_ ? 0 : 1;
   common_.supernodal = CHOLMOD_SIMPLICIAL;
   common_.final_ll = 0;  // keep LDL^T
   const auto lap = [&t0](double& phase) {
@@ -120,7 +125,9 @@ LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance) : width_(cs.width(
     t0 = t;
   };
   lap(timing_.assemble);
-  factor_ = cholmod_analyze(&a, &common_);
+  factor_ = ordering_reused_ ? cholmod_analyze_p(&a, const_cast<int*>(previous->permutation.data()),
+                                                 nullptr, 0, &common_)
+                             : cholmod_analyze(&a, &common_);
   lap(timing_.analyze);
   if (!factor_ || common_.status != CHOLMOD_OK) return;
   cholmod_factorize(&a, factor_, &common_);
@@ -140,6 +147,15 @@ LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance) : width_(cs.width(
 LogLdlt::~LogLdlt() {
   if (factor_) cholmod_free_factor(&factor_, &common_);
   cholmod_finish(&common_);
+}
+
+std::shared_ptr<const FactorOrdering> LogLdlt::ordering(const ConfigSpace& cs) const {
+  if (!ok_) return nullptr;
+  auto o = std::make_shared<FactorOrdering>();
+  o->free_mask = cs.freeMask();
+  const int* perm = static_cast<const int*>(factor_->Perm);
+  o->permutation.assign(perm, perm + factor_->n);
+  return o;
 }
 
 size_t LogLdlt::factorNonZeros() const {

@@ -25,6 +25,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace wheelchair_harmonic_planner {
@@ -39,8 +40,9 @@ struct ScaledValue {
 class LogLdlt {
  public:
   /// Orders and factors A for every free cell of `cs` (conductance per cell, or 1 everywhere if
-  /// !use_conductance). ok() is false if the factorization failed (not expected).
-  LogLdlt(const ConfigSpace& cs, bool use_conductance);
+  /// !use_conductance). ok() is false if the factorization failed (not expected). `previous`:
+  /// an earlier ordering, used instead of AMD if it was made for the same free cells.
+  LogLdlt(const ConfigSpace& cs, bool use_conductance, const FactorOrdering* previous = nullptr);
 
   ~LogLdlt();
   LogLdlt(const LogLdlt&) = delete;
@@ -49,6 +51,10 @@ class LogLdlt {
   bool ok() const { return ok_; }
   /// CPU time of the constructor's phases (incl. their page faults).
   const FactorTiming& timing() const { return timing_; }
+  /// True if `previous` was used.
+  bool orderingReused() const { return ordering_reused_; }
+  /// This factorization's ordering (for the next map).
+  std::shared_ptr<const FactorOrdering> ordering(const ConfigSpace& cs) const;
   size_t unknowns() const { return cells_.size(); }
   /// Non-zeros of L including its diagonal (which holds D).
   size_t factorNonZeros() const;
@@ -74,6 +80,7 @@ class LogLdlt {
   LargeVector<int> inverse_perm_;     ///< position in the factor of each unknown
   bool ok_ = false;
   FactorTiming timing_;
+  bool ordering_reused_ = false;
   mutable LargeVector<ScaledValue> x_;  ///< per-solve scratch, reused
   mutable LargeVector<double> sum_;
 };

@@ -255,6 +255,43 @@ TEST(HarmonicExact, DirectFactorIsReusedForEveryGoalOnTheSameMap) {
   EXPECT_EQ(cache.factorizations, 2);
 }
 
+// A map with the same free cells (here: only the clearance band's conductances differ) reuses
+// the previous factorization's ordering instead of AMD, and the result is still SOR's; a map
+// whose free cells changed is ordered afresh.
+TEST(HarmonicExact, DirectOrderingIsReusedForAMapWithTheSameFreeCells) {
+  const OccupancyMap m = makeMaze(144, 24, 4, 3);
+  ConfigSpaceParams band;  // the chair's C-space with the 20 cm clearance band
+  const ConfigSpace first(m, band);
+  band.band_conductance = 0.3;
+  const ConfigSpace same_cells(m, band);
+  ASSERT_EQ(first.freeMask(), same_cells.freeMask());
+  int gx = 0, gy = 0;
+  while (!first.isFree(gx, gy)) gx = (gx + 1) % 144, gy += gx == 0;
+  HarmonicSolverParams direct, sor;
+  direct.tolerance = sor.tolerance = 1e-9;
+  sor.method = HarmonicSolverParams::Method::kSor;
+  HarmonicFactorCache cache;
+  ASSERT_TRUE(solveHarmonic(first, gx, gy, direct, nullptr, &cache).converged);
+  EXPECT_EQ(cache.orderings_reused, 0);
+  cache.reset();
+  const HarmonicSolution s = solveHarmonic(same_cells, gx, gy, direct, nullptr, &cache);
+  ASSERT_TRUE(s.converged) << "residual " << s.residual;
+  EXPECT_EQ(cache.factorizations, 2);
+  EXPECT_EQ(cache.orderings_reused, 1);
+  const HarmonicSolution reference = solveHarmonic(same_cells, gx, gy, sor);
+  ASSERT_TRUE(reference.converged);
+  expectSameField(reference, s, 1e-6);
+  OccupancyMap changed = m;
+  for (int k = 0; k < 144; ++k) changed.at(k, 72) = wheelchair_mapping::kOccupied;
+  const ConfigSpace other_cells(changed, band);
+  cache.reset();
+  int ox = gx, oy = gy;
+  while (!other_cells.isFree(ox, oy)) ox = (ox + 1) % 144, oy += ox == 0;
+  ASSERT_TRUE(solveHarmonic(other_cells, ox, oy, direct, nullptr, &cache).converged);
+  EXPECT_EQ(cache.factorizations, 3);
+  EXPECT_EQ(cache.orderings_reused, 1);
+}
+
 TEST(HarmonicExact, GoalInObstacleIsRejected) {
   const ConfigSpace cs(makeCorridor(1.0, 0.5, 0.05), pointRobot());
   EXPECT_THROW(solveHarmonic(cs, 0, 0, HarmonicSolverParams()), std::invalid_argument);

@@ -56,6 +56,14 @@ struct HarmonicSolution {
 
 class LogLdlt;
 
+/// The fill-reducing order of a factorization and the free cells it was computed for: the next
+/// map with exactly the same free cells (e.g. only the clearance band's conductances changed,
+/// or the same map again) reuses it and skips the AMD ordering.
+struct FactorOrdering {
+  std::vector<uint8_t> free_mask;
+  std::vector<int> permutation;  ///< unknown (free cells numbered row by row) at each position
+};
+
 /// CPU seconds of the direct solver's map-dependent phases (incl. their page faults): the
 /// equation's assembly, CHOLMOD's symbolic analysis (AMD ordering, elimination tree, counts)
 /// and the numeric LDL^T factorization.
@@ -74,8 +82,11 @@ struct HarmonicFactorCache {
   std::shared_ptr<const LogLdlt> factor;
   const ConfigSpace* cspace = nullptr;
   bool use_conductance = true;
-  int factorizations = 0;     ///< factors computed through this cache (for tests and the bench)
-  FactorTiming timing;        ///< of the last factorization
+  int factorizations = 0;    ///< factors computed through this cache (for tests and the bench)
+  int orderings_reused = 0;  ///< of those, with the previous map's ordering
+  FactorTiming timing;       ///< of the last factorization
+  /// Kept across reset(): the last factorization's ordering, for a map with the same free cells.
+  std::shared_ptr<const FactorOrdering> ordering;
   std::vector<double> spare;  ///< storage recycled for the next solution's log_u
   void reset() {
     factor.reset();
