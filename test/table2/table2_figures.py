@@ -221,7 +221,8 @@ def _table2(records):
     return lines, rc, re, complete
 
 
-def write_markdown(records, bench_rows, bench_problem, target, speed):
+def write_markdown(records, bench_rows, bench_problem, target, speed, nice=None,
+                   wall_time_s=None):
     """report.md; returns True when every run reached its goal and both means beat the paper."""
     t2, rc, re, complete = _table2(records)
     reached = [r for r in records if r.get("outcome") == "goal_reached" and not r.get("collision")
@@ -237,8 +238,13 @@ def write_markdown(records, bench_rows, bench_problem, target, speed):
              f"(wheelchair_sim, eq. 15 with rolling resistance, laser noise 1 cm, odometry "
              f"errors) at {speed:g}× real time behind the CAN path (base driver over UDP); the "
              "one-process chair: map server, KLD localizer, harmonic planner, controller, base "
-             "driver. Protocol per pair: teleport the chair to the start, `/initialpose` there, "
-             "goal on `/move_base_simple/goal`, wait for the controller's `goal_reached`.", "",
+             "driver, safety supervisor, HMI"
+             + (f"; simulator and chair at nice {nice} (as deployed: `Nice=-5` in "
+                "deploy/wheelchair.service)" if nice is not None else "")
+             + ". Protocol per pair: teleport the chair to the start, `/initialpose` there, "
+             "goal on `/move_base_simple/goal`, wait for the controller's `goal_reached`"
+             + (f". All runs in one go, rviz snapshots included: {wall_time_s / 60:.1f} min wall"
+                if wall_time_s else "") + ".", "",
              "Definitions: reference = the planned path `/plan` (axle-centre poses) as a "
              "polyline. MSEre = mean over the true trajectory (`/sim/ground_truth`, 50 Hz) of the "
              "squared distance to the nearest point of the reference; MSErc = the same over the "
