@@ -202,7 +202,21 @@ HarmonicSolution solveHarmonic(const ConfigSpace& cs, int goal_ix, int goal_iy,
                      warm_start->height == sol.height && warm_start->goal_ix == goal_ix &&
                      warm_start->goal_iy == goal_iy;
   const bool direct = params.method == HarmonicSolverParams::Method::kDirect;
-  if (direct && !sol.warm_started) {
+  if (direct && sol.warm_started) {
+    // The earlier solution for this goal (the map changed): kept as is if it still meets the
+    // tolerance on this map, checked without building the stencil; else factored as below.
+    const double earlier = earlierSolutionResidual(cs, warm_start->log_u, goal,
+                                                   params.use_conductance, params.tolerance);
+    if (earlier < params.tolerance) {
+      sol.log_u = warm_start->log_u;
+      for (size_t k = 0; k < sol.log_u.size(); ++k)
+        if (!cs.freeMask()[k]) sol.log_u[k] = kNegInf;
+      sol.residual = earlier;
+      sol.converged = true;
+      return sol;
+    }
+  }
+  if (direct) {
     // Direct: the factors (cached per map) and two log-space solves; the residual is checked
     // on the result and SOR polishes below only if it missed the tolerance.
     const auto factor = directFactor(cs, params, factor_cache, sol.factor_reused);

@@ -1,7 +1,9 @@
 #include "harmonic_stencil.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 
 namespace wheelchair_harmonic_planner {
 
@@ -55,6 +57,35 @@ Stencil buildStencil(const ConfigSpace& cs, const std::vector<int>& dist, size_t
     s.total[c] = total;
   }
   return s;
+}
+
+double earlierSolutionResidual(const ConfigSpace& cs, const std::vector<double>& l, size_t goal,
+                               bool use_conductance, double give_up_above) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const auto& free = cs.freeMask();
+  if (l.size() != free.size() || !free[goal] || l[goal] != 0.0) return kInf;
+  const long w = cs.width();
+  const long offsets[4] = {1, -1, w, -w};
+  auto sigma = [&](size_t k) {
+    return use_conductance ? cs.conductance(static_cast<int>(k % w), static_cast<int>(k / w)) : 1.0;
+  };
+  double residual = 0.0;
+  for (size_t k = 0; k < free.size(); ++k) {
+    if (!free[k]) continue;
+    const bool finite = std::isfinite(l[k]);
+    double total = 0.0, sum = 0.0;
+    for (const long off : offsets) {
+      const size_t n = static_cast<size_t>(static_cast<long>(k) + off);
+      if (free[n] && std::isfinite(l[n]) != finite) return kInf;  // connectivity changed
+      const double edge = 0.5 * (sigma(k) + (free[n] ? sigma(n) : sigma(k)));
+      total += edge;
+      if (finite && free[n]) sum += edge * std::exp(l[n] - l[k]);
+    }
+    if (!finite || k == goal) continue;
+    residual = std::max(residual, std::abs(sum / total - 1.0));
+    if (residual > give_up_above) break;
+  }
+  return residual;
 }
 
 double relativeResidual(const Stencil& s, const std::vector<double>& l, long width,

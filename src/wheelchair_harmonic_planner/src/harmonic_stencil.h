@@ -25,6 +25,13 @@ struct Stencil {
 Stencil buildStencil(const ConfigSpace& cs, const std::vector<int>& dist, size_t goal,
                      bool use_conductance);
 
+/// Convergence criterion of an earlier solution (e.g. for the same goal before the map changed)
+/// on `cs`, without building a stencil: max over the free cells with finite log u but the goal
+/// of the relative residual; +infinity if the connectivity changed (a free cell with -inf next
+/// to a free cell with finite log u, or the goal not free). Stops once above `give_up_above`.
+double earlierSolutionResidual(const ConfigSpace& cs, const std::vector<double>& log_u, size_t goal,
+                               bool use_conductance, double give_up_above);
+
 /// Max over the stencil's cells of the relative residual |sum_j w_kj u_j / u_k - 1| of the log
 /// field l (the convergence criterion); also returns the scaled coefficients
 /// a_kj = w_kj exp(l_j - l_k) in `a` (4 per listed cell) if `a` is not null.
