@@ -134,7 +134,9 @@ void PathTracker::beginStop(const std::string& reason, const Eigen::Vector2d& et
                             TrackerState end_state) {
   phases_.clear();
   path_pending_ = false;
-  ++stop_count_;
+  // Reaching the goal ends this path, it is no stop a newer path must respect: a path that
+  // came during the final moments (the rider's next goal) is still driven.
+  if (end_state != TrackerState::kGoalReached) ++stop_count_;
   if (state_ == TrackerState::kStopping) return;  // keep the first reason
   reason_ = reason;
   stop_end_state_ = end_state;

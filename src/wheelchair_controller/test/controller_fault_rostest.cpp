@@ -1,7 +1,9 @@
 // rostest: the controller nodelet tracks a path (tf map->base_link and /odom fed here), then
 // gets a fault (~fault: nan_path | stale_pose | pose_jump | zero_length_path | safety_stop |
 // user_stop | localization_lost) and must command zero torque + brake and report
-// "aborted: <reason>" on ~status; after the stop, it resumes only as specified.
+// "aborted: <reason>" on ~status; after the stop, it resumes only as specified. ~path_status
+// says the same and names the path it concerns (the stamp of the /plan it answers).
+#include <actionlib_msgs/GoalStatus.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
@@ -17,6 +19,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <mutex>
 #include <string>
 
 namespace {
@@ -71,6 +74,19 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
       });
   ros::Subscriber status_sub = nh.subscribe<std_msgs::String>(
       "controller/status", 10, [&](const std_msgs::String::ConstPtr& m) { status = m->data; });
+  actionlib_msgs::GoalStatus path_status;
+  std::mutex path_status_mutex;
+  ros::Subscriber path_status_sub = nh.subscribe<actionlib_msgs::GoalStatus>(
+      "controller/path_status", 10, [&](const actionlib_msgs::GoalStatus::ConstPtr& m) {
+        std::lock_guard<std::mutex> lock(path_status_mutex);
+        path_status = *m;
+      });
+  // ~path_status reached `code` about the path stamped `stamp`, with ~status's text.
+  const auto path_status_is = [&](uint8_t code, const ros::Time& stamp) {
+    std::lock_guard<std::mutex> lock(path_status_mutex);
+    return path_status.status == code && path_status.goal_id.stamp == stamp &&
+           path_status.text == status;
+  };
   ros::Publisher path_pub = nh.advertise<nav_msgs::Path>("plan", 1, true);
   ros::Publisher odom_pub = nh.advertise<nav_msgs::Odometry>("odom", 10);
   ros::Publisher safety_pub = nh.advertise<std_msgs::Bool>("safety/stop", 1, true);
@@ -103,18 +119,26 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
 
   ASSERT_TRUE(waitFor([&] { return count > 10; }, 20.0)) << "no /wheel_torques";
   EXPECT_TRUE(last.brake) << "idle controller holds the brake";
-  path_pub.publish(straightPath());
+  nav_msgs::Path path = straightPath();
+  path_pub.publish(path);
   ASSERT_TRUE(waitFor(tracking, 10.0))
       << "the controller does not start tracking; status: " << status;
+  EXPECT_TRUE(waitFor(
+      [&] { return path_status_is(actionlib_msgs::GoalStatus::ACTIVE, path.header.stamp); }, 2.0))
+      << "~path_status while tracking; status: " << status;
 
   if (fault == "nan_path") {
-    path_pub.publish(straightPath(30));
+    ros::WallDuration(0.05).sleep();  // a stamp of its own
+    path = straightPath(30);
+    path_pub.publish(path);
   } else if (fault == "stale_pose") {
     publish_pose = false;
   } else if (fault == "pose_jump") {
     pose_x = 1.0;
   } else if (fault == "zero_length_path") {
-    path_pub.publish(straightPath(-1, 0.0));
+    ros::WallDuration(0.05).sleep();
+    path = straightPath(-1, 0.0);
+    path_pub.publish(path);
   } else if (fault == "safety_stop") {
     std_msgs::Bool stop;
     stop.data = true;
@@ -129,6 +153,10 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
   EXPECT_TRUE(waitFor(stopped, 6.0)) << "status: " << status;
   EXPECT_TRUE(waitFor([&] { return status.rfind("aborted", 0) == 0; }, 1.0)) << status;
   EXPECT_NE(status.find(kExpectedReason.at(fault)), std::string::npos) << status;
+  // The abort answers the path in effect: the refused one, or the one driven when it stopped.
+  EXPECT_TRUE(waitFor(
+      [&] { return path_status_is(actionlib_msgs::GoalStatus::ABORTED, path.header.stamp); }, 1.0))
+      << "~path_status after the fault; status: " << status;
   // It stays stopped.
   ros::WallDuration(0.5).sleep();
   EXPECT_TRUE(stopped()) << status;
@@ -139,9 +167,13 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
   publish_pose = true;
   const bool held = fault == "safety_stop" || fault == "localization_lost";
   if (held) {
-    path_pub.publish(straightPath());
+    path = straightPath();
+    path_pub.publish(path);
     ros::WallDuration(1.0).sleep();
     EXPECT_TRUE(stopped()) << "a path during a held stop must not resume; status: " << status;
+    // The rider must hear that this (newer) path was refused: the abort now answers it.
+    EXPECT_TRUE(path_status_is(actionlib_msgs::GoalStatus::ABORTED, path.header.stamp))
+        << "~path_status of a path refused during a hold; status: " << status;
     std_msgs::Bool clear;
     clear.data = false;
     safety_pub.publish(clear);
@@ -151,9 +183,13 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
     ros::WallDuration(1.0).sleep();
     EXPECT_TRUE(stopped()) << "clearing alone must not resume; status: " << status;
   }
-  path_pub.publish(straightPath());
+  path = straightPath();
+  path_pub.publish(path);
   EXPECT_TRUE(waitFor(tracking, 10.0))
       << "a new path after the stop must resume; status: " << status;
+  EXPECT_TRUE(waitFor(
+      [&] { return path_status_is(actionlib_msgs::GoalStatus::ACTIVE, path.header.stamp); }, 2.0))
+      << "~path_status after resuming; status: " << status;
 }
 
 int main(int argc, char** argv) {

@@ -216,3 +216,25 @@ TEST(Faults, PathPreparedElsewhereIsSwappedInByTheNextStep) {
   EXPECT_EQ(out.state, wc::TrackerState::kTracking);
   EXPECT_NEAR(out.reference.position.x(), p.lookahead, 1e-3) << "P_l reference starts at P + L";
 }
+
+// Reaching the goal ends the path; it is no stop: a path that came in the final moments (the
+// rider's next goal, its reference still being built) must not be dropped as after a stop.
+TEST(Faults, ReachingTheGoalIsNoStopThatDropsTheNextPath) {
+  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  wc::PathTracker tracker(p, wc::TrackerConfig{});
+  tracker.setPath(wc::PathBuilder({0.0, 0.0, 0.0}).straight(1.0).poses());
+  const uint64_t stops = tracker.stopCount();
+  wd::State x = wd::stateAtAxlePose(0.0, 0.0, 0.0, p);
+  wc::TrackerOutput out;
+  for (int k = 0; k < 1500 && out.state != wc::TrackerState::kGoalReached; ++k) {
+    const double t = k * 0.02;
+    out = tracker.update(t, wc::PoseMeasurement{t, wd::axlePose(x, p)}, {t, x.tail<2>()});
+    if (out.command.brake) x.tail<2>().setZero();
+    for (int i = 0; i < 20 && !out.command.brake; ++i)
+      x = wd::integrateRK4(x, out.command.torque, 1e-3, p);
+  }
+  ASSERT_EQ(out.state, wc::TrackerState::kGoalReached) << out.reason;
+  EXPECT_EQ(tracker.stopCount(), stops) << "a path prepared meanwhile would be dropped";
+  tracker.abort("user stop");
+  EXPECT_EQ(tracker.stopCount(), stops + 1) << "a stop still counts";
+}

@@ -2,6 +2,10 @@
 // fixed rate, plus ~reference, ~tracking_error and ~status for rviz and tests. Stops (controlled)
 // on /safety/stop (latched Bool), /user_stop (Empty) and kld/localized != "localized".
 // A path's reference is built on a worker thread; the control step only swaps it in.
+// ~path_status (actionlib_msgs/GoalStatus, latched) says the same as ~status and which path it
+// concerns (goal_id.stamp = that /plan's header.stamp): an end status of an older path is not
+// the answer to a newer goal (the HMI relies on it). status: PENDING idle, ACTIVE aligning /
+// tracking / rotating_to_goal, PREEMPTING stopping, SUCCEEDED goal_reached, ABORTED aborted.
 #pragma once
 
 #include <wheelchair_controller/path_tracker.h>
@@ -13,6 +17,7 @@
 #include <tf2_ros/buffer.h>
 #include <wheelchair_common/shared_tf.h>
 
+#include <actionlib_msgs/GoalStatus.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/Empty.h>
 #include <std_msgs/String.h>
@@ -39,6 +44,12 @@ class ControllerNodelet : public nodelet::Nodelet {
     std::vector<Pose2> poses;
     double initial_speed = 0.0;
     uint64_t sequence = 0, stop_count = 0;
+    ros::Time stamp;  ///< the /plan's header.stamp
+  };
+  /// The newest path whose fate is not yet known: swapped in, refused, or dropped by a stop.
+  struct PendingPath {
+    uint64_t sequence = 0, stop_count = 0;
+    ros::Time stamp;
   };
   void onPath(const nav_msgs::Path::ConstPtr& msg);
   void onSafetyStop(const std_msgs::Bool::ConstPtr& msg);
@@ -49,6 +60,9 @@ class ControllerNodelet : public nodelet::Nodelet {
   void onTimer(const ros::TimerEvent& event);
   std::optional<PoseMeasurement> lookupPose();
   void publish(const TrackerOutput& out, const ros::Time& now);
+  void publishStatus(const TrackerOutput& out);
+  /// The pending path is decided (swapped in, refused, or dropped): the status now concerns it.
+  void settlePending();
 
   std::mutex mutex_;
   std::unique_ptr<PathTracker> tracker_;
@@ -57,9 +71,11 @@ class ControllerNodelet : public nodelet::Nodelet {
   WheelSpeedMeasurement wheels_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   ros::Subscriber path_sub_, odom_sub_, safety_sub_, user_stop_sub_, localized_sub_;
-  ros::Publisher torque_pub_, reference_pub_, error_pub_, status_pub_;
+  ros::Publisher torque_pub_, reference_pub_, error_pub_, status_pub_, path_status_pub_;
   ros::Timer timer_;
-  std::string last_status_;
+  std::string last_status_, last_path_status_;
+  ros::Time status_path_stamp_, last_path_stamp_;  ///< the path the tracker's state concerns
+  std::optional<PendingPath> pending_;
 
   // Worker: builds the latest requested path's reference; mutex_ guards it too.
   std::condition_variable request_cv_;

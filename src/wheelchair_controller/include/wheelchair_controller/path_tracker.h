@@ -120,7 +120,8 @@ class PathTracker {
   /// "path ignored during <hold>" (a stop already running keeps its first reason). Returns
   /// that refusal, or empty when no hold is active.
   std::string refuseIfHeld();
-  /// Counts the stops begun: a path prepared before a stop must not undo it.
+  /// Counts the stops begun (not the goal's own braking): a path prepared before a stop must
+  /// not undo it.
   uint64_t stopCount() const { return stop_count_; }
   /// One control step at time `now` [s]: latest pose (nullopt: none, e.g. lost
   /// localization) and wheel speeds from odometry.

@@ -59,6 +59,7 @@ void ControllerNodelet::onInit() {
   reference_pub_ = pnh.advertise<geometry_msgs::PointStamped>("reference", 10);
   error_pub_ = pnh.advertise<geometry_msgs::Vector3Stamped>("tracking_error", 10);
   status_pub_ = pnh.advertise<std_msgs::String>("status", 10, true);
+  path_status_pub_ = pnh.advertise<actionlib_msgs::GoalStatus>("path_status", 10, true);
   worker_ = std::thread(&ControllerNodelet::buildReferences, this);
   path_sub_ = nh.subscribe("plan", 1, &ControllerNodelet::onPath, this);
   safety_sub_ = nh.subscribe("safety/stop", 1, &ControllerNodelet::onSafetyStop, this);
@@ -72,8 +73,10 @@ void ControllerNodelet::onPath(const nav_msgs::Path::ConstPtr& msg) {
   std::vector<Pose2> poses;
   for (const auto& p : msg->poses)
     poses.emplace_back(p.pose.position.x, p.pose.position.y, yawOf(p.pose.orientation));
+  const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
   std::lock_guard<std::mutex> lock(mutex_);
   ++path_sequence_;  // a newer path supersedes one still being built
+  pending_ = PendingPath{path_sequence_, tracker_->stopCount(), stamp};
   std::string rejection = tracker_->refuseIfHeld();  // shows on the status when refused
   if (rejection.empty() && !msg->header.frame_id.empty() && msg->header.frame_id != map_frame_) {
     rejection = "path in frame '" + msg->header.frame_id + "', expected '" + map_frame_ + "'";
@@ -86,10 +89,11 @@ void ControllerNodelet::onPath(const nav_msgs::Path::ConstPtr& msg) {
       tracker_->abort(rejection);
     } else {
       request_ = PathRequest{std::move(poses), tracker_->startSpeed(), path_sequence_,
-                             tracker_->stopCount()};
+                             tracker_->stopCount(), stamp};
       request_cv_.notify_one();
     }
   }
+  if (!rejection.empty()) settlePending();  // the refusal concerns this path
   if (!rejection.empty()) NODELET_WARN("controller: path rejected: %s", rejection.c_str());
 }
 
@@ -105,7 +109,9 @@ void ControllerNodelet::buildReferences() {
         preparePath(request.poses, chair_, tracker_->config(), request.initial_speed);
     lock.lock();
     // Swap in only if no newer path came and no stop began meanwhile.
-    if (request.sequence != path_sequence_ || request.stop_count != tracker_->stopCount()) continue;
+    if (request.sequence != path_sequence_) continue;
+    settlePending();  // swapped in or dropped: what the status says next concerns this path
+    if (request.stop_count != tracker_->stopCount()) continue;
     const std::string rejection = tracker_->setPreparedPath(prepared);
     if (!rejection.empty()) NODELET_WARN("controller: path rejected: %s", rejection.c_str());
   }
@@ -159,15 +165,15 @@ void ControllerNodelet::onTimer(const ros::TimerEvent&) {
   publish(tracker_->update(now.toSec(), pose, wheels_), now);
 }
 
-void ControllerNodelet::publish(const TrackerOutput& out, const ros::Time& now) {
-  wheelchair_msgs::WheelTorques cmd;
-  cmd.header.stamp = now;
-  cmd.header.frame_id = base_frame_;
-  cmd.right = out.command.torque(0);
-  cmd.left = out.command.torque(1);
-  cmd.brake = out.command.brake;
-  torque_pub_.publish(cmd);
+void ControllerNodelet::settlePending() {
+  if (!pending_) return;
+  status_path_stamp_ = pending_->stamp;
+  pending_.reset();
+}
 
+void ControllerNodelet::publishStatus(const TrackerOutput& out) {
+  // A stop drops the path still being built (buildReferences): the stop answers it.
+  if (pending_ && pending_->stop_count != tracker_->stopCount()) settlePending();
   std::string status = toString(out.state);
   if (!out.reason.empty()) status += ": " + out.reason;
   if (status != last_status_) {
@@ -178,6 +184,44 @@ void ControllerNodelet::publish(const TrackerOutput& out, const ros::Time& now) 
     if (!out.reason.empty()) NODELET_WARN("controller: %s", status.c_str());
   }
   if (!out.reason.empty()) NODELET_WARN_THROTTLE(5.0, "controller: %s", status.c_str());
+  if (status == last_path_status_ && status_path_stamp_ == last_path_stamp_) return;
+  actionlib_msgs::GoalStatus s;
+  s.goal_id.stamp = status_path_stamp_;
+  s.text = status;
+  switch (out.state) {
+    case TrackerState::kIdle:
+      s.status = actionlib_msgs::GoalStatus::PENDING;
+      break;
+    case TrackerState::kAligning:
+    case TrackerState::kTracking:
+    case TrackerState::kRotatingToGoal:
+      s.status = actionlib_msgs::GoalStatus::ACTIVE;
+      break;
+    case TrackerState::kStopping:
+      s.status = actionlib_msgs::GoalStatus::PREEMPTING;
+      break;
+    case TrackerState::kGoalReached:
+      s.status = actionlib_msgs::GoalStatus::SUCCEEDED;
+      break;
+    case TrackerState::kAborted:
+      s.status = actionlib_msgs::GoalStatus::ABORTED;
+      break;
+  }
+  path_status_pub_.publish(s);
+  last_path_status_ = status;
+  last_path_stamp_ = status_path_stamp_;
+}
+
+void ControllerNodelet::publish(const TrackerOutput& out, const ros::Time& now) {
+  wheelchair_msgs::WheelTorques cmd;
+  cmd.header.stamp = now;
+  cmd.header.frame_id = base_frame_;
+  cmd.right = out.command.torque(0);
+  cmd.left = out.command.torque(1);
+  cmd.brake = out.command.brake;
+  torque_pub_.publish(cmd);
+
+  publishStatus(out);
   if (!out.has_reference) return;
   geometry_msgs::PointStamped ref;
   ref.header.stamp = now;
