@@ -2,10 +2,14 @@
 // requests, announcements and rviz markers out. It also tells the rider what became of a
 // goal: refused by the planner (with its reason), reached or aborted by the controller, or
 // stopped by the safety supervisor; each of those ends the drive and restarts scanning.
+// The controller's outcome is read from ~path_status, which names the path it concerns: the end
+// of a path older than the rider's latest command (a goal, a stop) is not this drive's end.
 #include <wheelchair_harmonic_planner/PlanCertificate.h>
 #include <wheelchair_hmi/places.h>
 #include <wheelchair_hmi/switch_scanner.h>
 #include <wheelchair_msgs/GoToPlace.h>
+
+#include <actionlib_msgs/GoalStatus.h>
 
 #include <geometry_msgs/PoseStamped.h>
 #include <nodelet/nodelet.h>
@@ -51,7 +55,7 @@ class HmiNodelet : public nodelet::Nodelet {
     finished_sub_ = nh.subscribe("hmi/finished", 1, &HmiNodelet::onFinished, this);
     go_to_srv_ = nh.advertiseService("go_to_place", &HmiNodelet::onGoToService, this);
     std::string controller_status, safety_status;
-    pnh.param<std::string>("controller_status", controller_status, "controller/status");
+    pnh.param<std::string>("controller_path_status", controller_status, "controller/path_status");
     pnh.param<std::string>("safety_status", safety_status, "safety/status");
     outcome_subs_.push_back(nh.subscribe("move_base_simple/goal", 1, &HmiNodelet::onGoal, this));
     outcome_subs_.push_back(nh.subscribe("plan_certificate", 1, &HmiNodelet::onPlan, this));
@@ -69,7 +73,11 @@ class HmiNodelet : public nodelet::Nodelet {
 
   void onSwitch(const std_msgs::Empty::ConstPtr&) {
     std::lock_guard<std::mutex> lock(mutex_);
-    handle(scanner_->press(ros::Time::now().toSec()));
+    const ScanOutput out = scanner_->press(ros::Time::now().toSec());
+    // The rider's stop is the latest command: what the controller still says about the path
+    // it stops (e.g. "tracking" sent just before the stop) does not restart the drive.
+    if (out.kind == ScanOutput::Kind::kStop) command_stamp_ = ros::Time::now();
+    handle(out);
   }
 
   void onFinished(const std_msgs::Empty::ConstPtr&) {
@@ -83,6 +91,7 @@ class HmiNodelet : public nodelet::Nodelet {
     std::lock_guard<std::mutex> lock(mutex_);
     scanner_->driving(ros::Time::now().toSec());
     goal_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+    command_stamp_ = goal_stamp_;
     goal_pending_ = true;
     if (certificate_ && certificate_->header.stamp >= goal_stamp_) answerGoal();
   }
@@ -100,14 +109,29 @@ class HmiNodelet : public nodelet::Nodelet {
       announce("Route found: " + formatLength(certificate_->length) + ".");
       return;
     }
+    // A goal refused during a drive: the chair may still follow the previous path (the host
+    // publishes no path for a goal it rejects outright); it stays where it is, as told.
+    if (controller_moving_) stop_pub_.publish(std_msgs::Empty());
     endDrive("Cannot go there: " + certificate_->failure_reason + ". The chair stays where it is.");
   }
 
-  /// The controller's state: "goal_reached" or "aborted: why" ends the drive.
-  void onController(const std_msgs::String::ConstPtr& msg) {
+  /// The controller's state and the path it concerns (stamped by the planner after the goal
+  /// came). Ignored when that path is older than the rider's latest command: the previous
+  /// drive's "goal_reached" can come after a new goal, before the new path reached the
+  /// controller. Otherwise "goal_reached" or "aborted: why" ends the drive, and a moving chair
+  /// (a new path, e.g. a replan, while scanning) puts the HMI back to driving: a press stops it.
+  void onController(const actionlib_msgs::GoalStatus::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (msg->data.rfind("goal_reached", 0) == 0) endDrive("Arrived.");
-    if (msg->data.rfind("aborted", 0) == 0) endDrive("Stopped: " + msg->data + ".");
+    controller_moving_ = msg->status == actionlib_msgs::GoalStatus::ACTIVE ||
+                         msg->status == actionlib_msgs::GoalStatus::PREEMPTING;
+    if (msg->goal_id.stamp + ros::Duration(kStampTolerance) < command_stamp_) return;
+    if (msg->status == actionlib_msgs::GoalStatus::SUCCEEDED) endDrive("Arrived.");
+    if (msg->status == actionlib_msgs::GoalStatus::ABORTED) endDrive("Stopped: " + msg->text + ".");
+    if (msg->status == actionlib_msgs::GoalStatus::ACTIVE &&
+        scanner_->phase() != SwitchScanner::Phase::kDriving) {
+      scanner_->driving(ros::Time::now().toSec());
+      announce("The chair is moving (" + msg->text + "). Press to stop.");
+    }
   }
 
   /// The supervisor's verdict: "safe" or "<reason>: <detail>".
@@ -215,6 +239,12 @@ class HmiNodelet : public nodelet::Nodelet {
   std::vector<ros::Subscriber> outcome_subs_;
   bool goal_pending_ = false;
   ros::Time goal_stamp_;
+  ros::Time command_stamp_;         ///< the rider's latest command: a goal's stamp, a stop's time
+  bool controller_moving_ = false;  ///< the controller's last status, whatever its path
+  /// [s] a path stamped this much before the command still counts as its answer: the planner
+  /// stamps /plan after the goal came, but a goal from another process (rviz) may carry a clock
+  /// a little ahead. An old drive's path is older by that drive's duration (seconds).
+  static constexpr double kStampTolerance = 0.1;
   wheelchair_harmonic_planner::PlanCertificate::ConstPtr certificate_;
   std::string last_safety_;
   ros::ServiceServer go_to_srv_;

@@ -7,20 +7,7 @@
 #include <std_msgs/Empty.h>
 #include <std_msgs/String.h>
 
-#include <functional>
-
-namespace {
-
-bool waitFor(const std::function<bool()>& done, double seconds = 10.0) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (ros::ok() && !done() && ros::WallTime::now() < end) {
-    ros::spinOnce();
-    ros::WallDuration(0.01).sleep();
-  }
-  return done();
-}
-
-}  // namespace
+#include "wait_for.h"
 
 TEST(HmiNode, ThreePressesSendTheKitchenSinkAsGoalAndAFourthStops) {
   ros::NodeHandle nh;
