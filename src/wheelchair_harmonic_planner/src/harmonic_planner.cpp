@@ -42,6 +42,7 @@ void HarmonicPlanner::initialize(const std::string& name,
     s.max_iterations = 2000;  // V-cycles
   }
   solver_params_ = s;
+  prepare_on_map_ = getParam(params, "prepare_on_map", true);
   const ConfigSpaceParams cspace_params = configSpaceParams(params);
   footprint_params_ = footprintPlanningParams(params, cspace_params);
   checker_.reset();
@@ -51,6 +52,7 @@ void HarmonicPlanner::initialize(const std::string& name,
   map_geometry_ = map;
   map_geometry_.data.clear();
   solution_current_ = false;  // the previous solution stays as a warm start
+  if (prepare_on_map_ && !solution_) prepareHarmonicFactor(*cspace_, solver_params_, factor_cache_);
 }
 
 bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,

@@ -131,6 +131,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
+    const ros::WallTime started = ros::WallTime::now();
     try {
       planner_->initialize(planner_name_, wheelchair_mapping::fromOccupancyGrid(*msg), params_);
       have_map_ = true;
@@ -139,8 +140,8 @@ class PlannerHostNodelet : public nodelet::Nodelet {
       NODELET_ERROR("planner host: map rejected: %s", e.what());
       return;
     }
-    NODELET_INFO("planner host: map %ux%u at %.3f m", msg->info.width, msg->info.height,
-                 msg->info.resolution);
+    NODELET_INFO("planner host: map %ux%u at %.3f m, prepared in %.3f s", msg->info.width,
+                 msg->info.height, msg->info.resolution, (ros::WallTime::now() - started).toSec());
     if (active_goal_) planAndPublish(std::nullopt, *active_goal_);  // replan on the new map
   }
 

@@ -52,6 +52,46 @@ TEST(HarmonicPlanner, PassesThe80cmDoorsOfFlatAndKeeps20cmInOpenSpace) {
   EXPECT_GT(open_points, 20);
 }
 
+// The map's factorization happens when the map arrives, so that the rider's first goal costs
+// only the solves; the plan is the same as with the factorization in makePlan. During a drive (a
+// goal tracked) a new map is not factored up front: the replan checks the earlier field first.
+TEST(HarmonicPlanner, FactorsANewMapOnArrivalAndTheFirstGoalOnlySolves) {
+  const auto maze = makeMaze(200, 36, 4, 2);
+  double sx, sy, gx, gy;
+  mazePassageCentre(0, 0, 36, 4, 0.05, sx, sy);
+  mazePassageCentre(3, 3, 36, 4, 0.05, gx, gy);
+  const Pose2D start{sx, sy, 0.0}, goal{gx, gy, 0.0};
+  const ParameterMap lazy{{"inscribed_radius", "0.31"}, {"prepare_on_map", "false"}};
+  const ParameterMap eager{{"inscribed_radius", "0.31"}};
+  HarmonicPlanner late, early;
+  late.initialize("late", maze, lazy);
+  early.initialize("early", maze, eager);
+  EXPECT_EQ(late.factorCache().factorizations, 0);
+  EXPECT_EQ(early.factorCache().factorizations, 1);
+  std::vector<Pose2D> late_plan, early_plan;
+  Certificate late_cert, early_cert;
+  ASSERT_TRUE(late.makePlan(start, goal, late_plan, late_cert)) << late_cert.failure_reason;
+  ASSERT_TRUE(early.makePlan(start, goal, early_plan, early_cert)) << early_cert.failure_reason;
+  EXPECT_EQ(late.factorCache().factorizations, 1);
+  EXPECT_EQ(early.factorCache().factorizations, 1) << "the first goal factored the map again";
+  ASSERT_EQ(late_plan.size(), early_plan.size());
+  for (size_t i = 0; i < late_plan.size(); ++i) {
+    EXPECT_EQ(late_plan[i].x, early_plan[i].x);
+    EXPECT_EQ(late_plan[i].y, early_plan[i].y);
+  }
+  // A small change far from the route while the goal is tracked: no factorization on arrival,
+  // the replan keeps (warm start) or recomputes the field, and still reaches the goal.
+  auto changed = maze;
+  for (int iy = 150; iy < 154; ++iy)
+    for (int ix = 20; ix < 24; ++ix) changed.at(ix, iy) = wheelchair_mapping::kOccupied;
+  early.initialize("early", changed, eager);
+  EXPECT_EQ(early.factorCache().factorizations, 1);
+  EXPECT_TRUE(early.makePlan(start, goal, early_plan, early_cert)) << early_cert.failure_reason;
+  EXPECT_TRUE(early_cert.warm_started);
+  HarmonicPlanner bad;
+  EXPECT_THROW(bad.initialize("bad", maze, {{"prepare_on_map", "often"}}), std::invalid_argument);
+}
+
 TEST(HarmonicPlanner, FailsClearlyForBadStartsAndGoals) {
   auto map = makeCorridor(6.0, 1.2, 0.05);
   for (int iy = 0; iy < map.height; ++iy) map.at(60, iy) = wheelchair_mapping::kOccupied;

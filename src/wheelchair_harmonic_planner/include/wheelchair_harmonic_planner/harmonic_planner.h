@@ -16,6 +16,11 @@ namespace wheelchair_harmonic_planner {
 /// unknown_is_obstacle from the parameters (defaults: ConfigSpaceParams()).
 ConfigSpaceParams configSpaceParams(const ParameterMap& params);
 
+/// Map-dependent work happens in initialize(): the C-space and, with the default direct solver,
+/// the factors of the map's equation (`prepare_on_map`), so that a rider's first goal on a map
+/// costs what every later goal costs (the solves, the descent and the footprint gate). Not when
+/// a goal is already tracked (a map change during a drive): the host replans that goal at once,
+/// and its earlier field is first checked on the new map (warm start, often no factorization).
 class HarmonicPlanner : public GlobalPlanner {
  public:
   void initialize(const std::string& name, const wheelchair_mapping::OccupancyMap& map,
@@ -29,6 +34,8 @@ class HarmonicPlanner : public GlobalPlanner {
   const HarmonicSolution* solution() const { return solution_ ? &*solution_ : nullptr; }
   const ConfigSpace* configSpace() const { return cspace_.get(); }
   const FootprintChecker* footprintChecker() const { return checker_.get(); }
+  /// The direct solver's factors of the current map (factorizations counts them).
+  const HarmonicFactorCache& factorCache() const { return factor_cache_; }
 
  private:
   std::string name_;
@@ -41,6 +48,8 @@ class HarmonicPlanner : public GlobalPlanner {
   std::optional<HarmonicSolution> solution_;  ///< kept as warm start for the same goal cell
   HarmonicFactorCache factor_cache_;          ///< direct solver's factors for cspace_
   bool solution_current_ = false;             ///< solved on the current map
+  /// `prepare_on_map` (default true): factor a new map in initialize() unless a goal is tracked.
+  bool prepare_on_map_ = true;
 };
 
 }  // namespace wheelchair_harmonic_planner

@@ -103,6 +103,15 @@ HarmonicSolution solveHarmonic(const ConfigSpace& cspace, int goal_ix, int goal_
                                const HarmonicSolution* warm_start = nullptr,
                                HarmonicFactorCache* factor_cache = nullptr);
 
+/// The direct solver's map-dependent work done ahead of any goal: fills `factor_cache` with the
+/// factors of `cspace` (nothing to do if it already holds them, or for the iterative solvers,
+/// which have no goal-independent part), then solves once for the first free cell so that the
+/// solves' buffers exist too. A planner calls it when a map arrives, so that the first goal on
+/// that map costs only the solves. False if the factorization failed (the solve then falls back
+/// to SOR).
+bool prepareHarmonicFactor(const ConfigSpace& cspace, const HarmonicSolverParams& params,
+                           HarmonicFactorCache& factor_cache);
+
 /// The paper's method, for comparison: plain Jacobi on phi (obstacles 1, goal 0), linear
 /// space, stopping when max |Delta phi| < tolerance. Returns phi per cell.
 struct JacobiResult {
