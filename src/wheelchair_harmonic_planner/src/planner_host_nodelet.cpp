@@ -151,6 +151,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     const auto goal = fromPoseStamped(*msg, map_frame_, reason);
     if (!goal) {
       NODELET_WARN_THROTTLE(1.0, "planner host: goal rejected: %s", reason.c_str());
+      active_goal_.reset();  // the rider asked for something else than the old goal: stop
       publishFailure("goal rejected: " + reason);
       return;
     }
@@ -235,13 +236,15 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     }
   }
 
+  /// An empty /plan (the controller stops the chair) and a failed certificate with the reason.
   void publishFailure(const std::string& reason) {
     Certificate cert;
     cert.failure_reason = reason;
-    std_msgs::Header header;
-    header.frame_id = map_frame_;
-    header.stamp = ros::Time::now();
-    cert_pub_.publish(toMsg(cert, header));
+    nav_msgs::Path path;
+    path.header.frame_id = map_frame_;
+    path.header.stamp = ros::Time::now();
+    plan_pub_.publish(path);
+    cert_pub_.publish(toMsg(cert, path.header));
   }
 
   pluginlib::ClassLoader<GlobalPlanner> loader_;

@@ -1,6 +1,6 @@
 // rostest: two planner hosts load the harmonic and the OMPL plugin by name, plan on a published
 // map from tf map->base_link (make_plan service and /move_base_simple/goal) and replan when the
-// map changes.
+// map changes; a goal it rejects stops the chair (empty /plan).
 #include <wheelchair_harmonic_planner/MakePlan.h>
 #include <wheelchair_harmonic_planner/PlanCertificate.h>
 #include <wheelchair_harmonic_planner/maze.h>
@@ -118,6 +118,19 @@ TEST(PlannerHost, BothPluginsPlanOnAPublishedMapAndReplanWhenItChanges) {
   EXPECT_NE(cert->failure_reason.find("not connected"), std::string::npos) << cert->failure_reason;
   ASSERT_TRUE(plan);
   EXPECT_TRUE(waitFor([&] { return plan->poses.empty(); }, 5.0));
+
+  // A goal on this side of the wall is planned; then a goal the host must reject (wrong frame)
+  // stops the chair: an empty /plan, and a certificate that names the reason.
+  plan.reset();
+  goal_pub.publish(pose(2.0, 0.8));
+  ASSERT_TRUE(waitFor([&] { return plan && !plan->poses.empty(); }, 10.0));
+  cert.reset();
+  auto wrong_frame = pose(2.5, 0.8);
+  wrong_frame.header.frame_id = "odom";
+  goal_pub.publish(wrong_frame);
+  ASSERT_TRUE(waitFor([&] { return cert && !cert->success; }, 10.0));
+  EXPECT_NE(cert->failure_reason.find("frame 'odom'"), std::string::npos) << cert->failure_reason;
+  EXPECT_TRUE(waitFor([&] { return plan->poses.empty(); }, 5.0)) << "the old path was kept";
 }
 
 int main(int argc, char** argv) {
