@@ -1,6 +1,7 @@
 #include "log_cholesky.h"
 
 #include "large_blocks.h"
+#include "ordering_update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -110,24 +111,35 @@ LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance, const FactorOrderi
   a.dtype = CHOLMOD_DOUBLE;
   a.sorted = 1;
   a.packed = 1;
-  // AMD only (METIS/NESDIS give more fill on these grids and cost more), or the previous map's
-  // ordering (AMD and postorder, so already postordered) if its free cells are the same.
+  // AMD (METIS/NESDIS give more fill on these grids and cost more; a geometric nested
+  // dissection too, and its fill joins distant cells: ordering_update.h), or the previous map's
+  // ordering (AMD and postorder, so already postordered) if its free cells are the same, or
+  // adapted to the new free cells if few changed.
   ordering_reused_ = previous && previous->free_mask == free &&
                      previous->permutation.size() == static_cast<size_t>(n);
-  common_.nmethods = 1;
-  common_.method[0].ordering = ordering_reused_ ? CHOLMOD_GIVEN : CHOLMOD_AMD;
-  common_.postorder = ordering_reused_ ? 0 : 1;
-  common_.supernodal = CHOLMOD_SIMPLICIAL;
-  common_.final_ll = 0;  // keep LDL^T
   const auto lap = [&t0](double& phase) {
     const double t = cpuSeconds();
     phase = t - t0;
     t0 = t;
   };
   lap(timing_.assemble);
-  factor_ = ordering_reused_ ? cholmod_analyze_p(&a, const_cast<int*>(previous->permutation.data()),
-                                                 nullptr, 0, &common_)
-                             : cholmod_analyze(&a, &common_);
+  LargeVector<int> derived;
+  if (previous && !ordering_reused_) {
+    derived = deriveOrdering(*previous, free, cells_, id_, width_, static_cast<size_t>(n) / 200,
+                             static_cast<size_t>(n) / 10);
+  }
+  ordering_derived_ = !derived.empty();
+  if (ordering_derived_) base_ordering_ = std::make_shared<const FactorOrdering>(*previous);
+  common_.nmethods = 1;
+  common_.method[0].ordering = ordering_reused_ || ordering_derived_ ? CHOLMOD_GIVEN : CHOLMOD_AMD;
+  common_.postorder = ordering_reused_ ? 0 : 1;
+  common_.supernodal = CHOLMOD_SIMPLICIAL;
+  common_.final_ll = 0;  // keep LDL^T
+  int* given = ordering_reused_    ? const_cast<int*>(previous->permutation.data())
+               : ordering_derived_ ? derived.data()
+                                   : nullptr;
+  factor_ =
+      given ? cholmod_analyze_p(&a, given, nullptr, 0, &common_) : cholmod_analyze(&a, &common_);
   lap(timing_.analyze);
   if (!factor_ || common_.status != CHOLMOD_OK) return;
   cholmod_factorize(&a, factor_, &common_);
@@ -151,6 +163,7 @@ LogLdlt::~LogLdlt() {
 
 std::shared_ptr<const FactorOrdering> LogLdlt::ordering(const ConfigSpace& cs) const {
   if (!ok_) return nullptr;
+  if (ordering_derived_) return base_ordering_;
   auto o = std::make_shared<FactorOrdering>();
   o->free_mask = cs.freeMask();
   const int* perm = static_cast<const int*>(factor_->Perm);

@@ -41,7 +41,9 @@ class LogLdlt {
  public:
   /// Orders and factors A for every free cell of `cs` (conductance per cell, or 1 everywhere if
   /// !use_conductance). ok() is false if the factorization failed (not expected). `previous`:
-  /// an earlier ordering, used instead of AMD if it was made for the same free cells.
+  /// an earlier ordering, used instead of AMD if it was made for the same free cells, or
+  /// adapted (ordering_update.h) if they differ in few: <= 0.5 % of the cells new, <= 10 %
+  /// blocked.
   LogLdlt(const ConfigSpace& cs, bool use_conductance, const FactorOrdering* previous = nullptr);
 
   ~LogLdlt();
@@ -51,9 +53,13 @@ class LogLdlt {
   bool ok() const { return ok_; }
   /// CPU time of the constructor's phases (incl. their page faults).
   const FactorTiming& timing() const { return timing_; }
-  /// True if `previous` was used.
+  /// True if `previous` was used as is.
   bool orderingReused() const { return ordering_reused_; }
-  /// This factorization's ordering (for the next map).
+  /// True if the ordering was adapted from `previous` (other free cells).
+  bool orderingDerived() const { return ordering_derived_; }
+  /// The ordering for the next map: this factorization's or, if it was adapted from `previous`,
+  /// a copy of `previous` (so that adaptations never accumulate: the next map is compared
+  /// with the map of the last fresh AMD ordering).
   std::shared_ptr<const FactorOrdering> ordering(const ConfigSpace& cs) const;
   size_t unknowns() const { return cells_.size(); }
   /// Non-zeros of L including its diagonal (which holds D).
@@ -81,7 +87,9 @@ class LogLdlt {
   bool ok_ = false;
   FactorTiming timing_;
   bool ordering_reused_ = false;
-  mutable LargeVector<ScaledValue> x_;  ///< per-solve scratch, reused
+  bool ordering_derived_ = false;
+  std::shared_ptr<const FactorOrdering> base_ordering_;  ///< `previous`, if adapted from it
+  mutable LargeVector<ScaledValue> x_;                   ///< per-solve scratch, reused
   mutable LargeVector<double> sum_;
 };
 
