@@ -19,6 +19,7 @@
 #include <ctime>
 #include <queue>
 #include <string>
+#include <vector>
 
 using namespace wheelchair_harmonic_planner;
 
@@ -41,24 +42,48 @@ void emit(const std::string& method, const std::string& metric, double value,
 constexpr int kMazeCorridor = 36;
 constexpr int kMazeWall = 4;
 
-/// Pose at the centre of maze passage (i, j) with the body in free space: the start faces the
-/// passage's first open side (the tail points at the dead end's wall, 0.9 m behind, not into
-/// it), the goal is reached from that side (arrival heading, so no turn on the spot there).
-Pose2D mazeEndPose(const wheelchair_mapping::OccupancyMap& map, int i, int j, bool arrive) {
-  Pose2D p;
-  mazePassageCentre(i, j, kMazeCorridor, kMazeWall, map.resolution, p.x, p.y);
+/// True if maze passages (i, j) and (i + di, j + dj) are joined (the wall cell between them is
+/// free).
+bool mazeJoined(const wheelchair_mapping::OccupancyMap& map, int i, int j, int di, int dj) {
+  double x, y;
+  mazePassageCentre(i, j, kMazeCorridor, kMazeWall, map.resolution, x, y);
   const double half = 0.5 * (kMazeCorridor + kMazeWall) * map.resolution;
-  for (const double yaw : {0.0, M_PI_2, M_PI, -M_PI_2}) {
-    // The wall cell between this passage and the next one in direction yaw.
-    const int wx = static_cast<int>(std::floor((p.x + half * std::cos(yaw)) / map.resolution));
-    const int wy = static_cast<int>(std::floor((p.y + half * std::sin(yaw)) / map.resolution));
-    if (wx > 0 && wy > 0 && wx < map.width && wy < map.height &&
-        map.at(wx, wy) == wheelchair_mapping::kFree) {
-      p.yaw = arrive ? std::remainder(yaw + M_PI, 2.0 * M_PI) : yaw;
-      break;
+  const int wx = static_cast<int>(std::floor((x + half * di) / map.resolution));
+  const int wy = static_cast<int>(std::floor((y + half * dj) / map.resolution));
+  return wx > 0 && wy > 0 && wx < map.width && wy < map.height &&
+         map.at(wx, wy) == wheelchair_mapping::kFree;
+}
+
+/// Start and goal at the centres of passages s and g (n x n passages, index i + n j), with the
+/// headings of the passage route between them (breadth-first over joined passages): the start
+/// faces its route's first passage and the goal is reached along its last one, so neither needs
+/// a turn on the spot (a passage leaves 4 cm around the turning body, under the 5 cm minimum).
+void mazeRouteEnds(const wheelchair_mapping::OccupancyMap& map, int n, int s, int g, Pose2D& start,
+                   Pose2D& goal) {
+  const int di[4] = {1, 0, -1, 0}, dj[4] = {0, 1, 0, -1};
+  std::vector<int> from(static_cast<size_t>(n) * n, -1);
+  std::queue<int> open;
+  from[s] = s;
+  open.push(s);
+  while (!open.empty()) {
+    const int c = open.front();
+    open.pop();
+    for (int d = 0; d < 4; ++d) {
+      const int ni = c % n + di[d], nj = c / n + dj[d];
+      if (ni < 0 || nj < 0 || ni >= n || nj >= n || from[nj * n + ni] >= 0) continue;
+      if (!mazeJoined(map, c % n, c / n, di[d], dj[d])) continue;
+      from[nj * n + ni] = c;
+      open.push(nj * n + ni);
     }
   }
-  return p;
+  mazePassageCentre(s % n, s / n, kMazeCorridor, kMazeWall, map.resolution, start.x, start.y);
+  mazePassageCentre(g % n, g / n, kMazeCorridor, kMazeWall, map.resolution, goal.x, goal.y);
+  if (from[g] < 0 || g == s) return;  // not connected (a perfect maze always is)
+  int second = g;
+  while (from[second] != s) second = from[second];
+  start.yaw = std::atan2(second / n - s / n, second % n - s % n);
+  const int last = from[g];
+  goal.yaw = std::atan2(g / n - last / n, g % n - last % n);
 }
 
 /// Shortest path length on the 8-connected free cells of the hard C-space (Dijkstra) [m].
@@ -249,7 +274,7 @@ void newGoalAndReplan(const wheelchair_mapping::OccupancyMap& map, const ConfigS
 }  // namespace
 
 // Usage: planner_bench CASE (world.yaml | mazeN) SX SY GX GY [png|-] [jacobi_max_sweeps]
-//        [sor_max_sweeps]
+//        [sor_max_sweeps] [rate]
 int main(int argc, char** argv) {
   if (argc < 6) {
     fprintf(stderr, "usage: planner_bench <world.yaml|mazeN> sx sy gx gy [out.png] [jacobi]\n");
@@ -266,8 +291,8 @@ int main(int argc, char** argv) {
   if (maze) {  // passage indices -> world poses along the passage's open side
     const int n = (map.width - kMazeWall) / (kMazeCorridor + kMazeWall);
     auto idx = [&](double v) { return v < 0 ? n + static_cast<int>(v) : static_cast<int>(v); };
-    start = mazeEndPose(map, idx(start.x), idx(start.y), false);
-    goal = mazeEndPose(map, idx(goal.x), idx(goal.y), true);
+    mazeRouteEnds(map, n, idx(start.x) + n * idx(start.y), idx(goal.x) + n * idx(goal.y), start,
+                  goal);
   }
   const ParameterMap common{{"inscribed_radius", "0.31"}, {"seed", "1"}};
   const double cspace_cpu0 = cpuSeconds();
@@ -283,7 +308,13 @@ int main(int argc, char** argv) {
   // log-space LDL^T, SOR (capped at sor_max sweeps, argv[8], so that 2048^2 stays short) and the
   // experimental multigrid (capped at 200 V-cycles). Wall and process CPU time.
   const std::string sor_max = argc > 8 ? argv[8] : "20000";
-  for (const std::string solver : {"direct", "sor", "multigrid"}) {
+  // "rate" (argv[9]): one of several start/goal pairs for the success rate: the default solver
+  // and the other planners only, no per-solver profile.
+  const bool rate_only = argc > 9 && std::string(argv[9]) == "rate";
+  const std::vector<std::string> solvers =
+      rate_only ? std::vector<std::string>{"direct"}
+                : std::vector<std::string>{"direct", "sor", "multigrid"};
+  for (const std::string& solver : solvers) {
     const std::string method = solver == "direct" ? "harmonic" : "harmonic_" + solver;
     HarmonicPlanner planner;
     ParameterMap p = common;
@@ -308,7 +339,7 @@ int main(int argc, char** argv) {
     if (ok) emit(method, "min_gradient", cert.min_gradient, "1/m");
     if (ok) emit(method, "plateau_steps", cert.plateau_steps, "steps");
     if (ok && solver == "direct") drawn.push_back({"harmonic", plan});
-    if (solver == "direct") {
+    if (solver == "direct" && !rate_only) {
       solveColdAndWarm(cs, start, goal);
       newGoalAndReplan(map, cs, common, start, goal);
     }
