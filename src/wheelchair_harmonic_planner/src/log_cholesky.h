@@ -13,7 +13,9 @@
 // exponent (ScaledValue: a double times 2^(256 b)), so u far below the smallest double (e^-5000
 // down a long corridor) keeps full relative precision, and return log u, exactly like the
 // iterative log-space solvers; no exp or log per factor non-zero (2.4x faster than a log-sum-exp
-// per row), one log per cell at the end.
+// per row), one log per cell at the end. AMD runs once per set of free cells: a later map with
+// the same free cells reuses its ordering, one with few changed cells adapts it
+// (ordering_update.h), which keeps the factor as local as AMD's.
 #pragma once
 
 #include <wheelchair_harmonic_planner/config_space.h>

@@ -59,7 +59,6 @@ LargeVector<int> deriveOrdering(const FactorOrdering& previous, const std::vecto
       const int v = id[static_cast<long>(cells[u]) + o];
       if (v >= 0 && !isNew(v)) first = std::min(first, key[v]);
     }
-
     if (first != kNone) queue.push_back({first, 1, u});
   }
   for (const Added& a : queue) key[a.unknown] = a.key;
