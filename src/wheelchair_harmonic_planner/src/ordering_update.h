@@ -5,7 +5,8 @@
 // filled graph of an induced subgraph in the inherited order is a subgraph of the old one's).
 // A new free cell is eliminated just before the earliest-eliminated of the old cells it touches
 // (directly, or through other new cells: breadth-first, the farthest first), so its fill joins
-// only cells near it: the factor stays as local as AMD's, which the extended-exponent solves
+// only cells near it (appended last instead, 282 new cells on maze1024 cost +11 % fill, not
+// +0.3 %): the factor stays as local as AMD's, which the extended-exponent solves
 // need (a geometric nested dissection, whose fill joins cells far apart along a maze's
 // passages, gave L entries down to 1e-300 and below on maze2048, i.e. lost precision).
 #pragma once

@@ -144,10 +144,9 @@ TEST(OrderingUpdate, GivesTheSameSolutionsAsAFreshOrderingWithAboutItsFill) {
   }
 }
 
-// A 200 m corridor, where u falls to ~e^-1400: the new cells (a niche opened in the wall at the
-// far end) are eliminated next to their neighbours, so the factor stays local and the tiny
-// values keep their relative precision; appended last instead, their fill would join cells
-// 200 m apart.
+// A 200 m corridor, where u falls far below the smallest double (log u < -700), with a niche
+// opened in the wall at the far end: the adapted factor keeps the tiny values' relative
+// precision (the fresh AMD factor's log u to 1e-12).
 TEST(OrderingUpdate, KeepsRelativePrecisionFarDownALongCorridor) {
   const OccupancyMap m = makeCorridor(200.0, 1.0, 0.05, 10);
   const ConfigSpace before(m, chair());
