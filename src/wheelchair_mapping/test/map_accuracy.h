@@ -1,6 +1,6 @@
 // Test helper: a built map compared cell by cell with the ground-truth world. Of the cells the
-// laser observed (not unknown), the fraction classified like the truth (occupied or not), and
-// the thickest wall away from the truth's junctions.
+// laser observed (not unknown), the fraction classified like the truth (occupied or not), the
+// thickest wall away from the truth's junctions, and how far occupied cells spill off the walls.
 #pragma once
 
 #include <wheelchair_mapping/occupancy_map.h>
@@ -13,6 +13,7 @@ struct Accuracy {
   int observed = 0;
   int correct = 0;
   int max_wall_run = 0;
+  int max_spill = 0;  ///< [cells] farthest occupied cell from the truth's nearest occupied one
   double fraction() const { return observed ? static_cast<double>(correct) / observed : 0.0; }
 };
 
@@ -38,21 +39,54 @@ inline bool nearJunction(const OccupancyMap& truth, int tx, int ty) {
   return false;
 }
 
-// Wall thickness at an occupied cell away from junctions: the shorter of its horizontal and
-// vertical runs of occupied cells (the run across the wall it stands in).
-inline int maxWallThickness(const OccupancyMap& built, const OccupancyMap& truth) {
-  int worst = 0;
+// Calls visit(x, y, in_truth, tx, ty) for every occupied cell (x, y) of the built map, with the
+// truth's cell at the same place (in_truth false: the place is outside the truth).
+template <typename Visit>
+void forEachOccupied(const OccupancyMap& built, const OccupancyMap& truth, Visit&& visit) {
   for (int y = 0; y < built.height; ++y) {
     for (int x = 0; x < built.width; ++x) {
       if (built.at(x, y) != kOccupied) continue;
       double wx, wy;
-      int tx, ty;
+      int tx = -1, ty = -1;
       built.cellToWorld(x, y, wx, wy);
-      if (truth.worldToCell(wx, wy, tx, ty) && nearJunction(truth, tx, ty)) continue;
-      worst =
-          std::max(worst, std::min(occupiedRun(built, x, y, 1, 0), occupiedRun(built, x, y, 0, 1)));
+      const bool in_truth = truth.worldToCell(wx, wy, tx, ty);
+      visit(x, y, in_truth, tx, ty);
     }
   }
+}
+
+// Wall thickness at an occupied cell away from junctions: the shorter of its horizontal and
+// vertical runs of occupied cells (the run across the wall it stands in).
+inline int maxWallThickness(const OccupancyMap& built, const OccupancyMap& truth) {
+  int worst = 0;
+  forEachOccupied(built, truth, [&](int x, int y, bool in_truth, int tx, int ty) {
+    if (in_truth && nearJunction(truth, tx, ty)) return;
+    worst =
+        std::max(worst, std::min(occupiedRun(built, x, y, 1, 0), occupiedRun(built, x, y, 0, 1)));
+  });
+  return worst;
+}
+
+// Chebyshev distance [cells] from truth cell (tx, ty) to the nearest occupied truth cell, at
+// most `cap` (also when there is none within it).
+inline int distanceToWall(const OccupancyMap& truth, int tx, int ty, int cap) {
+  for (int d = 0; d < cap; ++d) {
+    for (int y = ty - d; y <= ty + d; ++y) {
+      for (int x = tx - d; x <= tx + d; ++x) {
+        if (truth.inBounds(x, y) && truth.at(x, y) == kOccupied) return d;
+      }
+    }
+  }
+  return cap;
+}
+
+// The farthest any occupied cell of the built map lies from a wall of the truth [cells]: what
+// range noise and pose errors put in front of (or behind) the walls. Outside the truth: `cap`.
+inline int maxSpill(const OccupancyMap& built, const OccupancyMap& truth, int cap = 10) {
+  int worst = 0;
+  forEachOccupied(built, truth, [&](int, int, bool in_truth, int tx, int ty) {
+    worst = std::max(worst, in_truth ? distanceToWall(truth, tx, ty, cap) : cap);
+  });
   return worst;
 }
 
@@ -74,6 +108,7 @@ inline Accuracy compare(const OccupancyMap& built, const OccupancyMap& truth) {
     }
   }
   a.max_wall_run = maxWallThickness(built, truth);
+  a.max_spill = maxSpill(built, truth);
   return a;
 }
 

@@ -2,11 +2,24 @@
 // drives the chair through the living room and the kitchen of the `flat` world, its laser
 // gives 361 readings over 180 deg; 30 of the scans received over ROS, spread evenly along the
 // drive, are fused with the Bayes rule (eq. 1) at the simulator's ground-truth poses. The map is
-// compared with the world file: of the observed cells >= 98 % classified correctly at 0.5,
-// walls at most 2 cells thick, and the chair never touched anything.
+// compared with the world file: of the observed cells >= 98 % classified correctly at 0.5, no
+// occupied cell farther off a true wall than the laser's range noise can put a return, walls no
+// thicker than that allows, and the chair never touched anything.
+//
+// The noise bound: a simulated return lies inside the wall (MRPT's ray march stops at its first
+// sample inside an occupied cell) plus Gaussian range noise sigma. Wall faces lie on cell
+// boundaries, so a return lands in the free cell in front whenever the noise is negative
+// enough — near grazing incidence with probability up to 1/2, and where few other beams cross
+// that cell (the end of the stretch of wall seen) the cell ends up occupied: a 2-cell wall seen
+// from both sides shows 3 cells in 0-14 % of the noise draws at one drive's exact ground-truth
+// poses (200 draws on each of 5 recorded drives; never a cell 2 off a wall). Reaching
+// the cell after that takes an error beyond res = 5 sigma (2.9e-7 a beam) and a cell crossed by
+// passing beams, so: spill <= ceil(5 sigma / res) cells per face, and a wall of T cells seen
+// from both sides at most T + 2 spill cells thick. A 0.02 rad heading error spills 3 cells.
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
@@ -31,6 +44,10 @@ namespace {
 
 constexpr int kScans = 30;
 constexpr int kBeams = 361;
+constexpr double kInteriorWall = 0.10;  // [m] the flat's interior walls (make_worlds.py WALL)
+/// [s simulated] the route takes ~17 s; the limit is on the simulator's clock, which runs slower
+/// (not faster to catch up) on a loaded machine — rostest's time-limit guards the wall clock.
+constexpr double kDriveLimit = 60.0;
 
 struct Waypoint {
   double x, y;
@@ -40,6 +57,13 @@ struct Waypoint {
 // doorway's line (clear of the dining table) → east through the 0.9 m doorway (x 6.05,
 // y 4.4..5.3) → into the kitchen. Footprint clearance >= 0.14 m all along (checked on the grid).
 // Turns only where the footprint's 0.86 m swing radius is clear.
+//
+// The torque loops close over ROS, so their delay is the test's latency times the simulator's
+// speed (2.5, sim_mapping.test): the gains keep k delay < pi/2 up to ~0.5 s simulated, ~200 ms
+// of wall latency. Speed: 40 N m per m/s and wheel on ~145 kg (r 0.17 m) is a rate k of
+// ~3.2 /s; yaw: 20 N m per rad/s and wheel on ~25 kg m^2 (b 0.275 m) is ~2.6 /s. (150 and 60
+// at speed 5 were ~12 and ~8 /s, unstable beyond ~25 ms of latency: on a loaded machine the
+// chair rocked in place for minutes or hit the doorway.)
 const std::vector<Waypoint> kRoute = {{5.5, 4.85}, {8.0, 4.85}};
 constexpr double kFinalYaw = -M_PI / 2;  // finally face the kitchen's south part
 
@@ -79,6 +103,10 @@ class SimDrive {
   }
 
   bool done() const { return finished_; }
+  /// [s] simulated time since the first ground-truth pose.
+  double simSeconds() const {
+    return truth_.empty() ? 0.0 : (truth_.rbegin()->first - first_truth_).toSec();
+  }
   bool collided() const { return collided_; }
   /// Scans received over /scan, each with the ground-truth base_link pose at its stamp.
   const std::vector<std::pair<LaserScan2D, Pose2D>>& scans() const { return scans_; }
@@ -87,6 +115,7 @@ class SimDrive {
   void onTruth(const nav_msgs::Odometry::ConstPtr& m) {
     const Pose2D p{m->pose.pose.position.x, m->pose.pose.position.y,
                    tf2::getYaw(m->pose.pose.orientation)};
+    if (first_truth_.isZero()) first_truth_ = m->header.stamp;
     truth_[m->header.stamp] = p;
     while (truth_.size() > 400) truth_.erase(truth_.begin());
     matchScans();
@@ -131,12 +160,12 @@ class SimDrive {
     if (segment_ == kRoute.size()) {
       const double err = wrap(kFinalYaw - p.yaw);
       c = Command{0.0, std::clamp(2.5 * err, -0.8, 0.8), false};
-      finished_ = std::abs(err) < 0.02 && std::abs(w) < 0.02 && std::abs(v) < 0.01;
+      finished_ = std::abs(err) < 0.02 && std::abs(w) < 0.05 && std::abs(v) < 0.05;
     }
     // P control of speed and yaw rate through the sum and difference of the wheel torques.
     wheelchair_msgs::WheelTorques t;
     t.header.stamp = ros::Time::now();
-    const double common = 150.0 * (c.v - v), diff = 60.0 * (c.w - w);
+    const double common = 40.0 * (c.v - v), diff = 20.0 * (c.w - w);
     t.right = common + diff;
     t.left = common - diff;
     t.brake = finished_;
@@ -149,7 +178,7 @@ class SimDrive {
   std::map<ros::Time, Pose2D> truth_;
   std::vector<sensor_msgs::LaserScan::ConstPtr> pending_;
   std::vector<std::pair<LaserScan2D, Pose2D>> scans_;
-  ros::Time next_control_;
+  ros::Time next_control_, first_truth_;
   Waypoint start_{0, 0};
   bool started_ = false;
   size_t segment_ = 0;
@@ -178,14 +207,14 @@ TEST(SimMapping, ThirtyScansAlongADriveThroughTwoRooms) {
       << "the simulated laser is upright";
 
   SimDrive drive;
-  const ros::WallTime start = ros::WallTime::now(), end = start + ros::WallDuration(40.0);
-  while (ros::ok() && !drive.done() && !drive.collided() && ros::WallTime::now() < end) {
-    ros::spinOnce();
-    ros::WallDuration(0.0005).sleep();
+  const ros::WallTime start = ros::WallTime::now();
+  while (ros::ok() && !drive.done() && !drive.collided() && drive.simSeconds() < kDriveLimit) {
+    ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.01));  // waits, no polling
   }
   const double wall_s = (ros::WallTime::now() - start).toSec();
-  ASSERT_TRUE(drive.done()) << "the drive did not finish within 40 s wall time";
-  EXPECT_FALSE(drive.collided()) << "the chair touched an obstacle";
+  ASSERT_FALSE(drive.collided()) << "the chair touched an obstacle";
+  ASSERT_TRUE(drive.done()) << "the drive did not finish within " << kDriveLimit
+                            << " s simulated time";
 
   const auto& all = drive.scans();
   ASSERT_GE(all.size(), static_cast<size_t>(kScans));
@@ -205,19 +234,26 @@ TEST(SimMapping, ThirtyScansAlongADriveThroughTwoRooms) {
   const OccupancyMap built = mapper.map(half);
   if (std::string dump; ros::param::get("~dump", dump)) saveMap(built, dump);
   const test::Accuracy a = test::compare(built, truth);
+  double sigma = 0.0;  // the simulator's range noise, set in sim_mapping.test
+  ASSERT_TRUE(ros::param::get("/simulator/laser_range_noise", sigma));
+  const int spill_bound = static_cast<int>(std::ceil(5.0 * sigma / built.resolution - 1e-9));
+  const int wall_cells = static_cast<int>(std::lround(kInteriorWall / built.resolution));
 
   std::cout << "sim drive: " << all.size() << " scans received in " << wall_s << " s wall, "
             << kScans << " fused; " << a.correct << " / " << a.observed
             << " observed cells correct (" << 100 * a.fraction() << " %), thickest wall "
-            << a.max_wall_run << " cells\n";
+            << a.max_wall_run << " cells, farthest off a wall " << a.max_spill << " cells\n";
   RecordProperty("scans_received", static_cast<int>(all.size()));
   RecordProperty("observed_cells", a.observed);
   RecordProperty("correct_percent", std::to_string(100 * a.fraction()));
   RecordProperty("max_wall_cells", a.max_wall_run);
+  RecordProperty("max_spill_cells", a.max_spill);
   RecordProperty("drive_wall_seconds", std::to_string(wall_s));
+  RecordProperty("drive_sim_seconds", std::to_string(drive.simSeconds()));
   EXPECT_GT(a.observed, 8000) << "living room and kitchen should be largely observed";
   EXPECT_GE(a.fraction(), 0.98);
-  EXPECT_LE(a.max_wall_run, 2);
+  EXPECT_LE(a.max_spill, spill_bound) << "occupied cells farther off the walls than noise explains";
+  EXPECT_LE(a.max_wall_run, wall_cells + 2 * spill_bound);
 }
 
 }  // namespace
