@@ -21,6 +21,26 @@ double yawOf(const geometry_msgs::Quaternion& q) {
   return tf2::getYaw(q);
 }
 
+/// The actionlib status of the current path while the tracker is in `state`.
+uint8_t goalStatusOf(TrackerState state) {
+  using actionlib_msgs::GoalStatus;
+  switch (state) {
+    case TrackerState::kIdle:
+      return GoalStatus::PENDING;
+    case TrackerState::kAligning:
+    case TrackerState::kTracking:
+    case TrackerState::kRotatingToGoal:
+      return GoalStatus::ACTIVE;
+    case TrackerState::kStopping:
+      return GoalStatus::PREEMPTING;
+    case TrackerState::kGoalReached:
+      return GoalStatus::SUCCEEDED;
+    case TrackerState::kAborted:
+      break;
+  }
+  return GoalStatus::ABORTED;
+}
+
 }  // namespace
 
 ControllerNodelet::~ControllerNodelet() {
@@ -188,25 +208,7 @@ void ControllerNodelet::publishStatus(const TrackerOutput& out) {
   actionlib_msgs::GoalStatus s;
   s.goal_id.stamp = status_path_stamp_;
   s.text = status;
-  switch (out.state) {
-    case TrackerState::kIdle:
-      s.status = actionlib_msgs::GoalStatus::PENDING;
-      break;
-    case TrackerState::kAligning:
-    case TrackerState::kTracking:
-    case TrackerState::kRotatingToGoal:
-      s.status = actionlib_msgs::GoalStatus::ACTIVE;
-      break;
-    case TrackerState::kStopping:
-      s.status = actionlib_msgs::GoalStatus::PREEMPTING;
-      break;
-    case TrackerState::kGoalReached:
-      s.status = actionlib_msgs::GoalStatus::SUCCEEDED;
-      break;
-    case TrackerState::kAborted:
-      s.status = actionlib_msgs::GoalStatus::ABORTED;
-      break;
-  }
+  s.status = goalStatusOf(out.state);
   path_status_pub_.publish(s);
   last_path_status_ = status;
   last_path_stamp_ = status_path_stamp_;
