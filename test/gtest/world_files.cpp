@@ -1,6 +1,6 @@
 #include "world_files.h"
 
-#include <wheelchair_mapping/map_io.h>
+#include <wheelchair_core/map_io.h>
 #include <yaml-cpp/yaml.h>
 
 #include <set>
@@ -9,7 +9,7 @@
 namespace wheelchair_test {
 
 Grid loadWorldMap(const std::string& yaml_path) {
-  const wheelchair_mapping::OccupancyMap map = wheelchair_mapping::loadMap(yaml_path);
+  const wheelchair_core::OccupancyMap map = wheelchair_core::loadMap(yaml_path);
   Grid grid;
   grid.resolution = map.resolution;
   grid.origin_x = map.origin_x;
@@ -23,9 +23,9 @@ Grid loadWorldMap(const std::string& yaml_path) {
   grid.cells.reserve(map.data.size());
   for (const int8_t value : map.data) {
     values.insert(value);
-    grid.cells.push_back(value == wheelchair_mapping::kFree       ? Cell::kFree
-                         : value == wheelchair_mapping::kOccupied ? Cell::kOccupied
-                                                                  : Cell::kUnknown);
+    grid.cells.push_back(value == wheelchair_core::kFree       ? Cell::kFree
+                         : value == wheelchair_core::kOccupied ? Cell::kOccupied
+                                                               : Cell::kUnknown);
   }
   grid.values.assign(values.begin(), values.end());
   return grid;

@@ -1,5 +1,5 @@
 // Reads a test world as the tests see it: the map (through the project's own map_server loader,
-// wheelchair_mapping::loadMap, so the worlds and the loader check each other) and the world's
+// wheelchair_core::loadMap, so the worlds and the loader check each other) and the world's
 // named places and doorways.
 #pragma once
 

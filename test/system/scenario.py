@@ -15,7 +15,7 @@ import yaml
 from geometry_msgs.msg import PoseStamped, PoseWithCovarianceStamped
 from nav_msgs.msg import Odometry, Path
 from std_msgs.msg import Bool, Empty, String
-from wheelchair_harmonic_planner.msg import PlanCertificate
+from wheelchair_msgs.msg import PlanCertificate
 from wheelchair_msgs.srv import GoToPlace
 from wheelchair_sim.srv import AddObstacle, SetPose
 

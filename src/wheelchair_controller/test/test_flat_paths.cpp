@@ -1,8 +1,8 @@
 // The ten flat paths (flatTestPaths) fit the flat world: at every pose the chair's footprint,
 // grown by a margin, covers no occupied or unknown map cell and stays on the map.
 #include <wheelchair_controller/test_paths.h>
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_description/chair_params.h>
-#include <wheelchair_mapping/map_io.h>
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 
 namespace wc = wheelchair_controller;
 namespace wd = wheelchair_description;
-namespace wm = wheelchair_mapping;
+namespace wm = wheelchair_core;
 
 namespace {
 

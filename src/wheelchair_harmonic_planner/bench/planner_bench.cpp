@@ -1,11 +1,11 @@
 // Measuring binary of bench/planners: one case (a world or a generated maze), every method,
 // JSON objects {"case","method","metric","value","unit"} on stdout (one per line, the run script
 // joins them), and optionally a PNG with the paths over the map.
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_harmonic_planner/harmonic_planner.h>
 #include <wheelchair_harmonic_planner/maze.h>
 #include <wheelchair_harmonic_planner/ompl_planner.h>
 #include <wheelchair_harmonic_planner/path_metrics.h>
-#include <wheelchair_mapping/map_io.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 
 #include <mrpt/nav/planners/PlannerSimple2D.h>
@@ -44,21 +44,21 @@ constexpr int kMazeWall = 4;
 
 /// True if maze passages (i, j) and (i + di, j + dj) are joined (the wall cell between them is
 /// free).
-bool mazeJoined(const wheelchair_mapping::OccupancyMap& map, int i, int j, int di, int dj) {
+bool mazeJoined(const wheelchair_core::OccupancyMap& map, int i, int j, int di, int dj) {
   double x, y;
   mazePassageCentre(i, j, kMazeCorridor, kMazeWall, map.resolution, x, y);
   const double half = 0.5 * (kMazeCorridor + kMazeWall) * map.resolution;
   const int wx = static_cast<int>(std::floor((x + half * di) / map.resolution));
   const int wy = static_cast<int>(std::floor((y + half * dj) / map.resolution));
   return wx > 0 && wy > 0 && wx < map.width && wy < map.height &&
-         map.at(wx, wy) == wheelchair_mapping::kFree;
+         map.at(wx, wy) == wheelchair_core::kFree;
 }
 
 /// Start and goal at the centres of passages s and g (n x n passages, index i + n j), with the
 /// headings of the passage route between them (breadth-first over joined passages): the start
 /// faces its route's first passage and the goal is reached along its last one, so neither needs
 /// a turn on the spot (a passage leaves 4 cm around the turning body, under the 5 cm minimum).
-void mazeRouteEnds(const wheelchair_mapping::OccupancyMap& map, int n, int s, int g, Pose2D& start,
+void mazeRouteEnds(const wheelchair_core::OccupancyMap& map, int n, int s, int g, Pose2D& start,
                    Pose2D& goal) {
   const int di[4] = {1, 0, -1, 0}, dj[4] = {0, 1, 0, -1};
   std::vector<int> from(static_cast<size_t>(n) * n, -1);
@@ -146,7 +146,7 @@ struct Prepared {
 };
 
 Prepared prepare(GlobalPlanner& planner, const std::string& name,
-                 const wheelchair_mapping::OccupancyMap& map, const ParameterMap& params) {
+                 const wheelchair_core::OccupancyMap& map, const ParameterMap& params) {
   Prepared p;
   const double cpu0 = cpuSeconds();
   p.started = std::chrono::steady_clock::now();
@@ -230,7 +230,7 @@ void solveColdAndWarm(const ConfigSpace& cs, const Pose2D& start, const Pose2D& 
 /// this map are cached, then a replan to the same goal after a small map change (a 20 cm block
 /// dropped on the free cell nearest the map centre that is not the start or goal cell): the
 /// planner warm-starts from its last solution.
-void newGoalAndReplan(const wheelchair_mapping::OccupancyMap& map, const ConfigSpace& cs,
+void newGoalAndReplan(const wheelchair_core::OccupancyMap& map, const ConfigSpace& cs,
                       const ParameterMap& common, const Pose2D& start, const Pose2D& goal) {
   int gx, gy, sx, sy;
   cs.worldToCell(goal.x, goal.y, gx, gy);
@@ -245,7 +245,7 @@ void newGoalAndReplan(const wheelchair_mapping::OccupancyMap& map, const ConfigS
   const bool again = planner.makePlan(start, goal, plan, cert);
   emit("harmonic_new_goal", "success", again ? 1.0 : 0.0, "bool");
   emit("harmonic_new_goal", "cpu_time", (cpuSeconds() - cpu0) * 1e3, "ms");
-  wheelchair_mapping::OccupancyMap changed = map;
+  wheelchair_core::OccupancyMap changed = map;
   long best = -1;
   double best_d = INFINITY;
   for (int iy = 0; iy < cs.height(); ++iy)
@@ -259,7 +259,7 @@ void newGoalAndReplan(const wheelchair_mapping::OccupancyMap& map, const ConfigS
     }
   const int bx = static_cast<int>(best % cs.width()), by = static_cast<int>(best / cs.width());
   for (int iy = by - 2; iy < by + 2; ++iy)
-    for (int ix = bx - 2; ix < bx + 2; ++ix) changed.at(ix, iy) = wheelchair_mapping::kOccupied;
+    for (int ix = bx - 2; ix < bx + 2; ++ix) changed.at(ix, iy) = wheelchair_core::kOccupied;
   const double cpu1 = cpuSeconds();
   const auto t1 = std::chrono::steady_clock::now();
   planner.initialize("harmonic", changed, common);
@@ -282,9 +282,9 @@ int main(int argc, char** argv) {
   }
   const std::string what = argv[1];
   const bool maze = what.rfind("maze", 0) == 0;
-  const wheelchair_mapping::OccupancyMap map =
+  const wheelchair_core::OccupancyMap map =
       maze ? makeMaze(std::stoi(what.substr(4)), kMazeCorridor, kMazeWall, 1)
-           : wheelchair_mapping::loadMap(what);
+           : wheelchair_core::loadMap(what);
   case_name = maze ? what : what.substr(what.find_last_of('/') + 1);
   Pose2D start{std::stod(argv[2]), std::stod(argv[3]), 0.0};
   Pose2D goal{std::stod(argv[4]), std::stod(argv[5]), 0.0};

@@ -35,8 +35,7 @@ double smoothstep(double t) {
 
 }  // namespace
 
-ConfigSpace::ConfigSpace(const wheelchair_mapping::OccupancyMap& map,
-                         const ConfigSpaceParams& params)
+ConfigSpace::ConfigSpace(const wheelchair_core::OccupancyMap& map, const ConfigSpaceParams& params)
     : width_(map.width),
       height_(map.height),
       resolution_(map.resolution),

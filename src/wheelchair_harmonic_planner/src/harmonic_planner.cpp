@@ -22,8 +22,7 @@ ConfigSpaceParams configSpaceParams(const ParameterMap& params) {
   return p;
 }
 
-void HarmonicPlanner::initialize(const std::string& name,
-                                 const wheelchair_mapping::OccupancyMap& map,
+void HarmonicPlanner::initialize(const std::string& name, const wheelchair_core::OccupancyMap& map,
                                  const ParameterMap& params) {
   name_ = name;
   HarmonicSolverParams s;
@@ -113,7 +112,7 @@ bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vec
   return finish(ok);
 }
 
-bool HarmonicPlanner::potentialGrid(wheelchair_mapping::OccupancyMap& grid) const {
+bool HarmonicPlanner::potentialGrid(wheelchair_core::OccupancyMap& grid) const {
   if (!solution_ || solution_->width != map_geometry_.width ||
       solution_->height != map_geometry_.height) {
     return false;

@@ -8,7 +8,7 @@
 
 namespace wheelchair_harmonic_planner {
 
-using wheelchair_mapping::OccupancyMap;
+using wheelchair_core::OccupancyMap;
 
 namespace {
 
@@ -32,12 +32,12 @@ OccupancyMap makeMaze(int size, int corridor, int wall, uint32_t seed, double re
   const int pitch = corridor + wall;
   const int n = (size - wall) / pitch;
   if (n < 1) throw std::invalid_argument("makeMaze: grid too small for one passage");
-  OccupancyMap m = blankMap(size, size, resolution, wheelchair_mapping::kOccupied);
+  OccupancyMap m = blankMap(size, size, resolution, wheelchair_core::kOccupied);
   std::mt19937 rng(seed);
   std::vector<uint8_t> visited(static_cast<size_t>(n) * n, 0);
   std::vector<int> stack{0};
   visited[0] = 1;
-  fill(m, wall, wall, corridor, corridor, wheelchair_mapping::kFree);
+  fill(m, wall, wall, corridor, corridor, wheelchair_core::kFree);
   while (!stack.empty()) {
     const int c = stack.back();
     const int ci = c % n, cj = c / n;
@@ -56,10 +56,10 @@ OccupancyMap makeMaze(int size, int corridor, int wall, uint32_t seed, double re
     visited[nj * n + ni] = 1;
     stack.push_back(nj * n + ni);
     // Open the passage cell and the wall between the two passages.
-    fill(m, wall + ni * pitch, wall + nj * pitch, corridor, corridor, wheelchair_mapping::kFree);
+    fill(m, wall + ni * pitch, wall + nj * pitch, corridor, corridor, wheelchair_core::kFree);
     const int x0 = wall + std::min(ci, ni) * pitch, y0 = wall + std::min(cj, nj) * pitch;
     fill(m, x0, y0, di[d] != 0 ? corridor + pitch : corridor,
-         dj[d] != 0 ? corridor + pitch : corridor, wheelchair_mapping::kFree);
+         dj[d] != 0 ? corridor + pitch : corridor, wheelchair_core::kFree);
   }
   return m;
 }
@@ -74,9 +74,8 @@ void mazePassageCentre(int i, int j, int corridor, int wall, double resolution, 
 OccupancyMap makeCorridor(double length, double width, double resolution, int wall) {
   const int lx = static_cast<int>(std::lround(length / resolution));
   const int ly = static_cast<int>(std::lround(width / resolution));
-  OccupancyMap m =
-      blankMap(lx + 2 * wall, ly + 2 * wall, resolution, wheelchair_mapping::kOccupied);
-  fill(m, wall, wall, lx, ly, wheelchair_mapping::kFree);
+  OccupancyMap m = blankMap(lx + 2 * wall, ly + 2 * wall, resolution, wheelchair_core::kOccupied);
+  fill(m, wall, wall, lx, ly, wheelchair_core::kFree);
   return m;
 }
 

@@ -36,7 +36,7 @@ ob::PlannerPtr makeOmplPlanner(const std::string& type, const ob::SpaceInformati
 
 }  // namespace
 
-void OmplPlanner::initialize(const std::string& name, const wheelchair_mapping::OccupancyMap& map,
+void OmplPlanner::initialize(const std::string& name, const wheelchair_core::OccupancyMap& map,
                              const ParameterMap& params) {
   name_ = name;
   planner_type_ = getParam(params, "algorithm", planner_type_);

@@ -1,6 +1,6 @@
-#include <wheelchair_common/nodelet_main.h>
+#include <wheelchair_ros/nodelet_main.h>
 
 int main(int argc, char** argv) {
-  return wheelchair_common::runNodeletMain(argc, argv, "planner_host",
-                                           "wheelchair_harmonic_planner/PlannerHostNodelet");
+  return wheelchair_ros::runNodeletMain(argc, argv, "planner_host",
+                                        "wheelchair_harmonic_planner/PlannerHostNodelet");
 }

@@ -2,11 +2,11 @@
 // rviz (/move_base_simple/goal) and the ~make_plan service, publishes /plan and
 // /plan_certificate, and replans when /map changes.
 #include <wheelchair_description/chair_params.h>
-#include <wheelchair_harmonic_planner/MakePlan.h>
-#include <wheelchair_harmonic_planner/PlanCertificate.h>
 #include <wheelchair_harmonic_planner/footprint.h>
 #include <wheelchair_harmonic_planner/global_planner.h>
-#include <wheelchair_mapping/ros_conversions.h>
+#include <wheelchair_msgs/MakePlan.h>
+#include <wheelchair_msgs/PlanCertificate.h>
+#include <wheelchair_ros/conversions.h>
 
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -14,7 +14,7 @@
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
 #include <tf2/utils.h>
-#include <wheelchair_common/shared_tf.h>
+#include <wheelchair_ros/shared_tf.h>
 #include <pluginlib/class_list_macros.hpp>
 #include <pluginlib/class_loader.hpp>
 
@@ -24,6 +24,9 @@
 #include <optional>
 
 namespace wheelchair_harmonic_planner {
+
+using wheelchair_msgs::MakePlan;
+using wheelchair_msgs::PlanCertificate;
 
 namespace {
 
@@ -73,7 +76,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     pnh.param("max_pose_age", max_pose_age_, 0.5);
     readPlannerParams(pnh);
     planner_ = loader_.createInstance(planner_name_);  // throws (nodelet fails) on a bad name
-    tf_buffer_ = wheelchair_common::sharedTfBuffer();  // one /tf listener per process
+    tf_buffer_ = wheelchair_ros::sharedTfBuffer();     // one /tf listener per process
     plan_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
     cert_pub_ = nh.advertise<PlanCertificate>("plan_certificate", 1, true);
     potential_pub_ = pnh.advertise<nav_msgs::OccupancyGrid>("potential", 1, true);
@@ -133,7 +136,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     std::lock_guard<std::mutex> lock(mutex_);
     const ros::WallTime started = ros::WallTime::now();
     try {
-      planner_->initialize(planner_name_, wheelchair_mapping::fromOccupancyGrid(*msg), params_);
+      planner_->initialize(planner_name_, wheelchair_ros::fromOccupancyGrid(*msg), params_);
       have_map_ = true;
     } catch (const std::exception& e) {
       have_map_ = false;
@@ -211,10 +214,10 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     }
     plan_pub_.publish(path);  // an empty path on failure: the controller stops
     cert_pub_.publish(toMsg(cert, path.header));
-    wheelchair_mapping::OccupancyMap potential;
+    wheelchair_core::OccupancyMap potential;
     if (have_map_ && planner_->potentialGrid(potential)) {
       potential_pub_.publish(
-          wheelchair_mapping::toOccupancyGrid(potential, map_frame_, path.header.stamp));
+          wheelchair_ros::toOccupancyGrid(potential, map_frame_, path.header.stamp));
     }
     return {cert, path};
   }

@@ -6,7 +6,7 @@
 #include <cmath>
 
 using namespace wheelchair_harmonic_planner;
-using wheelchair_mapping::OccupancyMap;
+using wheelchair_core::OccupancyMap;
 
 namespace {
 
@@ -15,7 +15,7 @@ OccupancyMap freeMap(int w, int h, double res) {
   m.width = w;
   m.height = h;
   m.resolution = res;
-  m.data.assign(static_cast<size_t>(w) * h, wheelchair_mapping::kFree);
+  m.data.assign(static_cast<size_t>(w) * h, wheelchair_core::kFree);
   return m;
 }
 
@@ -23,7 +23,7 @@ OccupancyMap freeMap(int w, int h, double res) {
 
 TEST(ConfigSpace, DilatesAnObstacleByRadiusPlusMargin) {
   OccupancyMap m = freeMap(81, 81, 0.05);
-  m.at(40, 40) = wheelchair_mapping::kOccupied;
+  m.at(40, 40) = wheelchair_core::kOccupied;
   ConfigSpaceParams p;
   p.inscribed_radius = 0.31;
   p.min_clearance = 0.05;
@@ -42,7 +42,7 @@ TEST(ConfigSpace, DilatesAnObstacleByRadiusPlusMargin) {
 
 TEST(ConfigSpace, UnknownIsObstacleByDefault) {
   OccupancyMap m = freeMap(60, 60, 0.05);
-  m.at(30, 30) = wheelchair_mapping::kUnknown;
+  m.at(30, 30) = wheelchair_core::kUnknown;
   ConfigSpaceParams p;
   EXPECT_FALSE(ConfigSpace(m, p).isFree(30, 30 + 5));
   p.unknown_is_obstacle = false;
@@ -57,7 +57,7 @@ TEST(ConfigSpace, MapBorderIsAnObstacle) {
 
 TEST(ConfigSpace, ConductanceRampsAcrossTheClearanceBand) {
   OccupancyMap m = freeMap(200, 40, 0.05);
-  for (int ix = 0; ix < 200; ++ix) m.at(ix, 0) = wheelchair_mapping::kOccupied;
+  for (int ix = 0; ix < 200; ++ix) m.at(ix, 0) = wheelchair_core::kOccupied;
   ConfigSpaceParams p;
   p.inscribed_radius = 0.3;
   p.min_clearance = 0.05;

@@ -1,11 +1,11 @@
 // Descent on the harmonic potential: no local minima (the goal is reached from every free cell
 // of random mazes and of the test worlds), and the 200 m corridor where the paper's linear
 // formulation stalls.
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_harmonic_planner/gradient_descent.h>
 #include <wheelchair_harmonic_planner/harmonic_solver.h>
 #include <wheelchair_harmonic_planner/maze.h>
 #include <wheelchair_harmonic_planner/path_metrics.h>
-#include <wheelchair_mapping/map_io.h>
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <fstream>
 
 using namespace wheelchair_harmonic_planner;
-using wheelchair_mapping::OccupancyMap;
+using wheelchair_core::OccupancyMap;
 
 namespace {
 
@@ -62,7 +62,7 @@ TEST(Descent, ReachesTheGoalFromFreeCellsOfTheTestWorlds) {
   for (const std::string world : {"flat", "symmetric"}) {
     const std::string path = dir + "/" + world + ".yaml";
     if (!std::ifstream(path).good()) GTEST_SKIP() << "test worlds not found at " << dir;
-    const ConfigSpace cs(wheelchair_mapping::loadMap(path), ConfigSpaceParams());
+    const ConfigSpace cs(wheelchair_core::loadMap(path), ConfigSpaceParams());
     // Goal: the free cell of largest clearance.
     int gx = 0, gy = 0;
     for (int iy = 0; iy < cs.height(); ++iy)
@@ -117,7 +117,7 @@ TEST(Descent, TwoHundredMetreCorridorPaperFormulationStallsOursReachesTheGoal) {
 
 TEST(Descent, StartInObstacleOrDisconnectedFailsWithAReason) {
   OccupancyMap m = makeCorridor(4.0, 1.2, 0.05);
-  for (int iy = 0; iy < m.height; ++iy) m.at(40, iy) = wheelchair_mapping::kOccupied;  // a wall
+  for (int iy = 0; iy < m.height; ++iy) m.at(40, iy) = wheelchair_core::kOccupied;  // a wall
   const ConfigSpace cs(m, ConfigSpaceParams());
   const HarmonicSolution s = solveHarmonic(cs, 15, 14, HarmonicSolverParams());
   const DescentResult wall = descend(cs, s, 40 * 0.05 + 0.02, 0.7);

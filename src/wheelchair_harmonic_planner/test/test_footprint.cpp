@@ -15,7 +15,7 @@
 #include <random>
 
 using namespace wheelchair_harmonic_planner;
-using wheelchair_mapping::OccupancyMap;
+using wheelchair_core::OccupancyMap;
 
 #ifndef LCORNER_W
 #define LCORNER_W 1.2
@@ -32,14 +32,13 @@ OccupancyMap carved(double size, const std::vector<std::array<double, 4>>& free_
   OccupancyMap map;
   map.resolution = 0.05;
   map.width = map.height = static_cast<int>(std::lround(size / map.resolution));
-  map.data.assign(static_cast<size_t>(map.width) * map.height, wheelchair_mapping::kOccupied);
+  map.data.assign(static_cast<size_t>(map.width) * map.height, wheelchair_core::kOccupied);
   for (int iy = 0; iy < map.height; ++iy) {
     for (int ix = 0; ix < map.width; ++ix) {
       double x, y;
       map.cellToWorld(ix, iy, x, y);
       for (const auto& b : free_boxes)
-        if (x > b[0] && x < b[1] && y > b[2] && y < b[3])
-          map.at(ix, iy) = wheelchair_mapping::kFree;
+        if (x > b[0] && x < b[1] && y > b[2] && y < b[3]) map.at(ix, iy) = wheelchair_core::kFree;
     }
   }
   return map;
@@ -137,7 +136,7 @@ TEST(FootprintChecker, AnObstacleCellInsideTheBodyIsACollision) {
   OccupancyMap map = carved(6.0, {{0.1, 5.9, 0.1, 5.9}});
   int ix, iy;
   ASSERT_TRUE(map.worldToCell(2.6, 3.0, ix, iy));  // 0.4 m behind the axle, under the seat
-  map.at(ix, iy) = wheelchair_mapping::kOccupied;
+  map.at(ix, iy) = wheelchair_core::kOccupied;
   const ConfigSpace cs(map, ConfigSpaceParams());
   const FootprintChecker checker(cs, kChair);
   EXPECT_LT(checker.clearance({3.0, 3.0, 0.0}).clearance, 0.0);
@@ -160,7 +159,7 @@ TEST(FootprintChecker, DiscCoverGivesALowerBoundOfTheClearance) {
     int ix, iy;
     map.worldToCell(coord(rng), coord(rng), ix, iy);
     for (int dy = 0; dy < 4; ++dy)
-      for (int dx = 0; dx < 4; ++dx) map.at(ix + dx, iy + dy) = wheelchair_mapping::kOccupied;
+      for (int dx = 0; dx < 4; ++dx) map.at(ix + dx, iy + dy) = wheelchair_core::kOccupied;
   }
   const ConfigSpace cs(map, ConfigSpaceParams());
   const FootprintChecker checker(cs, kChair);

@@ -12,7 +12,7 @@
 #include <random>
 
 using namespace wheelchair_harmonic_planner;
-using wheelchair_mapping::OccupancyMap;
+using wheelchair_core::OccupancyMap;
 
 namespace {
 
@@ -57,8 +57,8 @@ TEST(HarmonicExact, MatchesDirectSparseSolveOnRandomGrids) {
     std::bernoulli_distribution blocked(0.2);
     for (int iy = 1; iy < 29; ++iy)
       for (int ix = 1; ix < 29; ++ix)
-        if (blocked(rng)) m.at(ix, iy) = wheelchair_mapping::kOccupied;
-    m.at(15, 15) = wheelchair_mapping::kFree;
+        if (blocked(rng)) m.at(ix, iy) = wheelchair_core::kOccupied;
+    m.at(15, 15) = wheelchair_core::kFree;
     const ConfigSpace cs(m, pointRobot());
     HarmonicSolverParams sp;
     sp.tolerance = 1e-10;
@@ -109,7 +109,7 @@ TEST(HarmonicExact, SorWarmStartConvergesFasterToTheSameSolution) {
   ASSERT_TRUE(cold.converged);
   // Close one passage far from the goal (a small map change) and re-solve.
   for (int iy = 150; iy < 160; ++iy)
-    for (int ix = 150; ix < 160; ++ix) m.at(ix, iy) = wheelchair_mapping::kOccupied;
+    for (int ix = 150; ix < 160; ++ix) m.at(ix, iy) = wheelchair_core::kOccupied;
   const ConfigSpace changed(m, p);
   const HarmonicSolution warm = solveHarmonic(changed, 6, 6, sp, &cold);
   const HarmonicSolution fresh = solveHarmonic(changed, 6, 6, sp);
@@ -165,8 +165,8 @@ void expectAgreementWithSor(HarmonicSolverParams::Method method) {
     std::bernoulli_distribution blocked(0.15);
     for (int iy = 1; iy < 61; ++iy)
       for (int ix = 1; ix < 61; ++ix)
-        if (blocked(rng)) m.at(ix, iy) = wheelchair_mapping::kOccupied;
-    m.at(30, 30) = wheelchair_mapping::kFree;
+        if (blocked(rng)) m.at(ix, iy) = wheelchair_core::kOccupied;
+    m.at(30, 30) = wheelchair_core::kFree;
     expectSolverMatchesSor(method, ConfigSpace(m, pointRobot()), 30, 30, 1e-10, 1e-6);
   }
   const ConfigSpace maze(makeMaze(144, 24, 4, 3), ConfigSpaceParams());
@@ -200,7 +200,7 @@ TEST(HarmonicExact, DirectWarmStartIsReusedWhenStillExactAndResolvedAfterAChange
   EXPECT_TRUE(same.converged && same.warm_started);
   EXPECT_EQ(same.iterations, 0);
   for (int iy = 150; iy < 160; ++iy)
-    for (int ix = 150; ix < 160; ++ix) m.at(ix, iy) = wheelchair_mapping::kOccupied;
+    for (int ix = 150; ix < 160; ++ix) m.at(ix, iy) = wheelchair_core::kOccupied;
   const ConfigSpace changed(m, pointRobot());
   const HarmonicSolution warm = solveHarmonic(changed, 6, 6, sp, &cold);
   const HarmonicSolution fresh = solveHarmonic(changed, 6, 6, sp);
@@ -210,11 +210,11 @@ TEST(HarmonicExact, DirectWarmStartIsReusedWhenStillExactAndResolvedAfterAChange
   // A door opened into a region the goal could not reach: the earlier solution (that region
   // exactly unreachable) is not kept, the new one reaches into it.
   OccupancyMap halves = makeCorridor(3.0, 3.0, 0.05, 1);  // 62 x 62 with a wall ring
-  for (int iy = 1; iy < 61; ++iy) halves.at(31, iy) = wheelchair_mapping::kOccupied;
+  for (int iy = 1; iy < 61; ++iy) halves.at(31, iy) = wheelchair_core::kOccupied;
   const HarmonicSolution left = solveHarmonic(ConfigSpace(halves, pointRobot()), 10, 10, sp);
   ASSERT_TRUE(left.converged);
   ASSERT_FALSE(left.reachable(50, 30));
-  halves.at(31, 30) = wheelchair_mapping::kFree;
+  halves.at(31, 30) = wheelchair_core::kFree;
   const ConfigSpace opened(halves, pointRobot());
   const HarmonicSolution after = solveHarmonic(opened, 10, 10, sp, &left);
   ASSERT_TRUE(after.converged);
@@ -232,9 +232,9 @@ TEST(HarmonicExact, DirectFactorIsReusedForEveryGoalOnTheSameMap) {
   std::bernoulli_distribution blocked(0.15);
   for (int iy = 1; iy < 61; ++iy)
     for (int ix = 1; ix < 61; ++ix)
-      if (blocked(rng) || ix == 31) m.at(ix, iy) = wheelchair_mapping::kOccupied;
+      if (blocked(rng) || ix == 31) m.at(ix, iy) = wheelchair_core::kOccupied;
   const int goals[3][2] = {{10, 10}, {50, 40}, {20, 50}};
-  for (const auto& g : goals) m.at(g[0], g[1]) = wheelchair_mapping::kFree;
+  for (const auto& g : goals) m.at(g[0], g[1]) = wheelchair_core::kFree;
   const ConfigSpace cs(m, pointRobot());
   HarmonicSolverParams direct, sor;
   direct.tolerance = sor.tolerance = 1e-10;
@@ -291,7 +291,7 @@ TEST(HarmonicExact, DirectOrderingIsReusedForAMapWithTheSameFreeCells) {
   ASSERT_TRUE(reference.converged);
   expectSameField(reference, s, 1e-6);
   OccupancyMap changed = m;
-  for (int k = 0; k < 144; ++k) changed.at(k, 72) = wheelchair_mapping::kOccupied;
+  for (int k = 0; k < 144; ++k) changed.at(k, 72) = wheelchair_core::kOccupied;
   const ConfigSpace other_cells(changed, band);
   cache.reset();
   int ox = gx, oy = gy;

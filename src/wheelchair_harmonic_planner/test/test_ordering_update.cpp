@@ -12,7 +12,7 @@
 #include <random>
 
 using namespace wheelchair_harmonic_planner;
-using wheelchair_mapping::OccupancyMap;
+using wheelchair_core::OccupancyMap;
 
 namespace {
 
@@ -34,16 +34,16 @@ OccupancyMap randomObstacles(uint32_t seed) {
   std::bernoulli_distribution blocked(0.25);
   for (int iy = 1; iy + 1 < m.height; ++iy)
     for (int ix = 1; ix + 1 < m.width; ++ix)
-      if (blocked(rng)) m.at(ix, iy) = wheelchair_mapping::kOccupied;
+      if (blocked(rng)) m.at(ix, iy) = wheelchair_core::kOccupied;
   return m;
 }
 
 /// Blocks a 4 x 4 cell square at (x, y) and frees every cell of a w x w window at (fx, fy).
 OccupancyMap changed(OccupancyMap m, int x, int y, int fx, int fy, int w) {
   for (int iy = y; iy < y + 4; ++iy)
-    for (int ix = x; ix < x + 4; ++ix) m.at(ix, iy) = wheelchair_mapping::kOccupied;
+    for (int ix = x; ix < x + 4; ++ix) m.at(ix, iy) = wheelchair_core::kOccupied;
   for (int iy = fy; iy < fy + w; ++iy)
-    for (int ix = fx; ix < fx + w; ++ix) m.at(ix, iy) = wheelchair_mapping::kFree;
+    for (int ix = fx; ix < fx + w; ++ix) m.at(ix, iy) = wheelchair_core::kFree;
   return m;
 }
 
@@ -155,7 +155,7 @@ TEST(OrderingUpdate, KeepsRelativePrecisionFarDownALongCorridor) {
   OccupancyMap opened = m;
   for (int iy = 3; iy < 10; ++iy)
     for (int ix = m.width - 120; ix < m.width - 100; ++ix)
-      opened.at(ix, iy) = wheelchair_mapping::kFree;
+      opened.at(ix, iy) = wheelchair_core::kFree;
   const ConfigSpace after(opened, chair());
   ASSERT_GT(countChanged(before, after, true), 0u);
   const LogLdlt fresh(after, true);

@@ -1,10 +1,10 @@
 // rostest: two planner hosts load the harmonic and the OMPL plugin by name, plan on a published
 // map from tf map->base_link (make_plan service and /move_base_simple/goal) and replan when the
 // map changes; a goal it rejects stops the chair (empty /plan).
-#include <wheelchair_harmonic_planner/MakePlan.h>
-#include <wheelchair_harmonic_planner/PlanCertificate.h>
 #include <wheelchair_harmonic_planner/maze.h>
-#include <wheelchair_mapping/ros_conversions.h>
+#include <wheelchair_msgs/MakePlan.h>
+#include <wheelchair_msgs/PlanCertificate.h>
+#include <wheelchair_ros/conversions.h>
 
 #include <gtest/gtest.h>
 #include <nav_msgs/Path.h>
@@ -13,8 +13,8 @@
 #include <algorithm>
 #include <cmath>
 
-using wheelchair_harmonic_planner::MakePlan;
-using wheelchair_harmonic_planner::PlanCertificate;
+using wheelchair_msgs::MakePlan;
+using wheelchair_msgs::PlanCertificate;
 
 namespace {
 
@@ -56,7 +56,7 @@ TEST(PlannerHost, BothPluginsPlanOnAPublishedMapAndReplanWhenItChanges) {
   auto potential_sub = nh.subscribe<nav_msgs::OccupancyGrid>(
       "harmonic_host/potential", 1,
       [&](const nav_msgs::OccupancyGrid::ConstPtr& m) { potential = m; });
-  map_pub.publish(wheelchair_mapping::toOccupancyGrid(map, "map", ros::Time::now()));
+  map_pub.publish(wheelchair_ros::toOccupancyGrid(map, "map", ros::Time::now()));
 
   for (const std::string host : {"harmonic_host", "ompl_host"}) {
     ASSERT_TRUE(ros::service::waitForService(host + "/make_plan", ros::Duration(20.0))) << host;
@@ -111,9 +111,9 @@ TEST(PlannerHost, BothPluginsPlanOnAPublishedMapAndReplanWhenItChanges) {
       10.0));
 
   // The map changes: a wall closes the corridor at x = 3 m, and the host replans and fails.
-  for (int iy = 0; iy < map.height; ++iy) map.at(60, iy) = wheelchair_mapping::kOccupied;
+  for (int iy = 0; iy < map.height; ++iy) map.at(60, iy) = wheelchair_core::kOccupied;
   cert.reset();
-  map_pub.publish(wheelchair_mapping::toOccupancyGrid(map, "map", ros::Time::now()));
+  map_pub.publish(wheelchair_ros::toOccupancyGrid(map, "map", ros::Time::now()));
   ASSERT_TRUE(waitFor([&] { return cert && !cert->success; }, 10.0));
   EXPECT_NE(cert->failure_reason.find("not connected"), std::string::npos) << cert->failure_reason;
   ASSERT_TRUE(plan);

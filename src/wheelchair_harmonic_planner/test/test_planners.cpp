@@ -1,10 +1,10 @@
 // The two planner plugins used directly (no ROS): the flat's 80 cm doorways, clearance where
 // space allows, failures with reasons, every OMPL planner on a maze.
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_harmonic_planner/harmonic_planner.h>
 #include <wheelchair_harmonic_planner/maze.h>
 #include <wheelchair_harmonic_planner/ompl_planner.h>
 #include <wheelchair_harmonic_planner/path_metrics.h>
-#include <wheelchair_mapping/map_io.h>
 
 #include <gtest/gtest.h>
 
@@ -25,7 +25,7 @@ TEST(HarmonicPlanner, PassesThe80cmDoorsOfFlatAndKeeps20cmInOpenSpace) {
   const std::string path = std::string(WORLDS_DIR) + "/flat.yaml";
   if (!std::ifstream(path).good()) GTEST_SKIP() << "test world not found: " << path;
   HarmonicPlanner planner;
-  planner.initialize("harmonic", wheelchair_mapping::loadMap(path), {{"inscribed_radius", "0.31"}});
+  planner.initialize("harmonic", wheelchair_core::loadMap(path), {{"inscribed_radius", "0.31"}});
   std::vector<Pose2D> plan;
   Certificate cert;
   ASSERT_TRUE(planner.makePlan({2.90, 7.25, 0.0}, {8.80, 7.50, 0.0}, plan, cert))
@@ -83,7 +83,7 @@ TEST(HarmonicPlanner, FactorsANewMapOnArrivalAndTheFirstGoalOnlySolves) {
   // the replan keeps (warm start) or recomputes the field, and still reaches the goal.
   auto changed = maze;
   for (int iy = 150; iy < 154; ++iy)
-    for (int ix = 20; ix < 24; ++ix) changed.at(ix, iy) = wheelchair_mapping::kOccupied;
+    for (int ix = 20; ix < 24; ++ix) changed.at(ix, iy) = wheelchair_core::kOccupied;
   early.initialize("early", changed, eager);
   EXPECT_EQ(early.factorCache().factorizations, 1);
   EXPECT_TRUE(early.makePlan(start, goal, early_plan, early_cert)) << early_cert.failure_reason;
@@ -94,7 +94,7 @@ TEST(HarmonicPlanner, FactorsANewMapOnArrivalAndTheFirstGoalOnlySolves) {
 
 TEST(HarmonicPlanner, FailsClearlyForBadStartsAndGoals) {
   auto map = makeCorridor(6.0, 1.2, 0.05);
-  for (int iy = 0; iy < map.height; ++iy) map.at(60, iy) = wheelchair_mapping::kOccupied;
+  for (int iy = 0; iy < map.height; ++iy) map.at(60, iy) = wheelchair_core::kOccupied;
   for (GlobalPlanner* planner :
        std::initializer_list<GlobalPlanner*>{new HarmonicPlanner, new OmplPlanner}) {
     std::unique_ptr<GlobalPlanner> owner(planner);

@@ -1,5 +1,5 @@
-#include <wheelchair_common/nodelet_main.h>
+#include <wheelchair_ros/nodelet_main.h>
 
 int main(int argc, char** argv) {
-  return wheelchair_common::runNodeletMain(argc, argv, "hmi", "wheelchair_hmi/HmiNodelet");
+  return wheelchair_ros::runNodeletMain(argc, argv, "hmi", "wheelchair_hmi/HmiNodelet");
 }

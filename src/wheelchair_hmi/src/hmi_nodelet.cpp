@@ -4,10 +4,10 @@
 // stopped by the safety supervisor; each of those ends the drive and restarts scanning.
 // The controller's outcome is read from ~path_status, which names the path it concerns: the end
 // of a path older than the rider's latest command (a goal, a stop) is not this drive's end.
-#include <wheelchair_harmonic_planner/PlanCertificate.h>
 #include <wheelchair_hmi/places.h>
 #include <wheelchair_hmi/switch_scanner.h>
 #include <wheelchair_msgs/GoToPlace.h>
+#include <wheelchair_msgs/PlanCertificate.h>
 
 #include <actionlib_msgs/GoalStatus.h>
 
@@ -96,7 +96,7 @@ class HmiNodelet : public nodelet::Nodelet {
     if (certificate_ && certificate_->header.stamp >= goal_stamp_) answerGoal();
   }
 
-  void onPlan(const wheelchair_harmonic_planner::PlanCertificate::ConstPtr& msg) {
+  void onPlan(const wheelchair_msgs::PlanCertificate::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     certificate_ = msg;
     if (goal_pending_ && msg->header.stamp >= goal_stamp_) answerGoal();
@@ -245,7 +245,7 @@ class HmiNodelet : public nodelet::Nodelet {
   /// stamps /plan after the goal came, but a goal from another process (rviz) may carry a clock
   /// a little ahead. An old drive's path is older by that drive's duration (seconds).
   static constexpr double kStampTolerance = 0.1;
-  wheelchair_harmonic_planner::PlanCertificate::ConstPtr certificate_;
+  wheelchair_msgs::PlanCertificate::ConstPtr certificate_;
   std::string last_safety_;
   ros::ServiceServer go_to_srv_;
   ros::Timer timer_;

@@ -3,7 +3,7 @@
 // must not end the new drive; while the chair moves, a switch press must stop it. The
 // controller is played here: each status on ~status (text) and ~path_status (with the stamp of
 // the path it concerns), as the controller nodelet publishes them.
-#include <wheelchair_harmonic_planner/PlanCertificate.h>
+#include <wheelchair_msgs/PlanCertificate.h>
 
 #include <actionlib_msgs/GoalStatus.h>
 #include <geometry_msgs/PoseStamped.h>
@@ -31,7 +31,7 @@ class StaleEnd : public testing::Test {
     stop_sub_ = nh_.subscribe<std_msgs::Empty>(
         "user_stop", 5, [this](const std_msgs::Empty::ConstPtr&) { ++stops_; });
     goal_pub_ = nh_.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 1);
-    cert_pub_ = nh_.advertise<wheelchair_harmonic_planner::PlanCertificate>("plan_certificate", 1);
+    cert_pub_ = nh_.advertise<wheelchair_msgs::PlanCertificate>("plan_certificate", 1);
     text_pub_ = nh_.advertise<std_msgs::String>("controller/status", 10);
     status_pub_ = nh_.advertise<GoalStatus>("controller/path_status", 10);
     switch_pub_ = nh_.advertise<std_msgs::Empty>("switch", 1);
@@ -57,7 +57,7 @@ class StaleEnd : public testing::Test {
 
   /// The planner's answer (success) and the /plan stamp it shares with the path.
   ros::Time planned() {
-    wheelchair_harmonic_planner::PlanCertificate cert;
+    wheelchair_msgs::PlanCertificate cert;
     cert.header.frame_id = "map";
     cert.header.stamp = ros::Time::now();
     cert.success = true;
@@ -170,7 +170,7 @@ TEST_F(StaleEnd, GoalRefusedWhileDrivingStopsTheChairAsTheRiderIsTold) {
   const int before = stops_;
   const size_t from = announced_.size();
   sendGoal();  // rejected by the planner host without a path: the chair would drive on to A
-  wheelchair_harmonic_planner::PlanCertificate cert;
+  wheelchair_msgs::PlanCertificate cert;
   cert.header.stamp = ros::Time::now();
   cert.failure_reason = "goal rejected: frame 'odom', expected 'map'";
   cert_pub_.publish(cert);

@@ -15,11 +15,11 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_broadcaster.h>
-#include <wheelchair_common/shared_tf.h>
 #include <wheelchair_kld/kld_localizer.h>
 #include <wheelchair_kld/ros/conversions.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
-#include <wheelchair_mapping/ros_conversions.h>
+#include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/shared_tf.h>
 #include <Eigen/Dense>
 #include <pluginlib/class_list_macros.hpp>
 
@@ -87,7 +87,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     int seed = 1;
     pnh.param("seed", seed, seed);
     seed_ = static_cast<uint64_t>(seed);
-    tf_buffer_ = wheelchair_common::sharedTfBuffer();  // one /tf listener per process
+    tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
     pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("kld_pose", 5, true);
     cloud_pub_ = nh.advertise<geometry_msgs::PoseArray>("particlecloud", 2, true);
     count_pub_ = nh.advertise<std_msgs::Int32>("kld/particle_count", 5);
@@ -117,7 +117,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     std::shared_ptr<const LocalizationMap> map;
     try {
       map = std::make_shared<LocalizationMap>(
-          wheelchair_mapping::toMrptGrid(wheelchair_mapping::fromOccupancyGrid(*msg)),
+          wheelchair_mapping::toMrptGrid(wheelchair_ros::fromOccupancyGrid(*msg)),
           params_.measurement.max_distance);
     } catch (const std::exception& e) {
       NODELET_ERROR("kld: map rejected: %s", e.what());

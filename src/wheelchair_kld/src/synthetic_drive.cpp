@@ -2,8 +2,8 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/random/RandomGenerators.h>
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_kld/synthetic_drive.h>
-#include <wheelchair_mapping/map_io.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 
 #include <cmath>
@@ -14,7 +14,7 @@ namespace wheelchair_kld {
 using mrpt::math::TPose2D;
 
 mrpt::maps::COccupancyGridMap2D loadWorldGrid(const std::string& yaml_path) {
-  return wheelchair_mapping::toMrptGrid(wheelchair_mapping::loadMap(yaml_path));
+  return wheelchair_mapping::toMrptGrid(wheelchair_core::loadMap(yaml_path));
 }
 
 std::vector<TPose2D> worldRoute(const std::string& name) {

@@ -8,10 +8,10 @@
 #include <std_msgs/String.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_kld/ros/conversions.h>
 #include <wheelchair_kld/synthetic_drive.h>
-#include <wheelchair_mapping/map_io.h>
-#include <wheelchair_mapping/ros_conversions.h>
+#include <wheelchair_ros/conversions.h>
 
 #include <cmath>
 #include <mutex>
@@ -42,7 +42,7 @@ class KldLocalizerNode : public testing::Test {
   void SetUp() override {
     std::string world;
     ASSERT_TRUE(pnh_.getParam("world", world));
-    const auto map = wheelchair_mapping::loadMap(world);
+    const auto map = wheelchair_core::loadMap(world);
     drive_ = simulateDrive(loadWorldGrid(world), worldRoute("flat"), dp_);
     pose_sub_ = nh_.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
         "kld_pose", 10, [this](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
@@ -59,7 +59,7 @@ class KldLocalizerNode : public testing::Test {
     scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
     init_pub_ = nh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("initialpose", 1, true);
     static_tf_.sendTransform(transform(dp_.sensor_pose, "base_link", "laser", ros::Time::now()));
-    map_pub_.publish(wheelchair_mapping::toOccupancyGrid(map, "map", ros::Time::now()));
+    map_pub_.publish(wheelchair_ros::toOccupancyGrid(map, "map", ros::Time::now()));
     // Wait for the localizer to subscribe and to have the map.
     for (int i = 0; i < 100 && (scan_pub_.getNumSubscribers() == 0 || status().empty()); ++i)
       ros::Duration(0.05).sleep();

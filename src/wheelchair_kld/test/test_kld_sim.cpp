@@ -12,11 +12,11 @@
 #include <rosgraph_msgs/Log.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/String.h>
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_kld/ros/conversions.h>
 #include <wheelchair_kld/synthetic_drive.h>
-#include <wheelchair_mapping/map_io.h>
-#include <wheelchair_mapping/ros_conversions.h>
 #include <wheelchair_msgs/WheelTorques.h>
+#include <wheelchair_ros/conversions.h>
 #include <wheelchair_sim/SetPose.h>
 
 #include <cmath>
@@ -59,8 +59,7 @@ class KldSim : public ::testing::Test {
       relay_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan_in", 10);
       scan_sub_ = nh_.subscribe("scan", 10, &KldSim::onScan, this);
     }
-    map_ = wheelchair_mapping::toOccupancyGrid(wheelchair_mapping::loadMap(world_), "map",
-                                               ros::Time(0));
+    map_ = wheelchair_ros::toOccupancyGrid(wheelchair_core::loadMap(world_), "map", ros::Time(0));
     map_pub_.publish(map_);
     ASSERT_TRUE(waitFor([&] { return haveTruth() && !statusNow().empty(); }, 30.0))
         << "no ground truth or no localizer status";

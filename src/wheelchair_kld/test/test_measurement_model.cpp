@@ -10,20 +10,20 @@ using mrpt::math::TPose2D;
 using namespace wheelchair_kld;
 
 namespace {
-wheelchair_mapping::OccupancyMap freeGrid(double resolution, int width, int height) {
-  wheelchair_mapping::OccupancyMap g;
+wheelchair_core::OccupancyMap freeGrid(double resolution, int width, int height) {
+  wheelchair_core::OccupancyMap g;
   g.resolution = resolution;
   g.width = width;
   g.height = height;
-  g.data.assign(g.width * g.height, wheelchair_mapping::kFree);
+  g.data.assign(g.width * g.height, wheelchair_core::kFree);
   return g;
 }
 }  // namespace
 
 TEST(LocalizationMap, DistanceTransformMatchesBruteForce) {
-  wheelchair_mapping::OccupancyMap g = freeGrid(0.1, 37, 23);
+  wheelchair_core::OccupancyMap g = freeGrid(0.1, 37, 23);
   const int occ[][2] = {{3, 4}, {30, 20}, {12, 12}, {13, 12}, {0, 22}};
-  for (auto& c : occ) g.at(c[0], c[1]) = wheelchair_mapping::kOccupied;
+  for (auto& c : occ) g.at(c[0], c[1]) = wheelchair_core::kOccupied;
   const LocalizationMap map(wheelchair_mapping::toMrptGrid(g), 10.0);
   for (int iy = 0; iy < g.height; ++iy)
     for (int ix = 0; ix < g.width; ++ix) {
@@ -36,9 +36,9 @@ TEST(LocalizationMap, DistanceTransformMatchesBruteForce) {
 // Inside a thick wall the distance grows with the depth below the surface (an endpoint that
 // overshoots into a wall is as unlikely as one that falls short by as much).
 TEST(LocalizationMap, DistanceInsideAThickWallIsTheDepthBelowItsSurface) {
-  wheelchair_mapping::OccupancyMap g = freeGrid(0.05, 30, 20);
+  wheelchair_core::OccupancyMap g = freeGrid(0.05, 30, 20);
   for (int iy = 5; iy < 15; ++iy)  // a wall 8 cells thick, x = 10..17
-    for (int ix = 10; ix < 18; ++ix) g.at(ix, iy) = wheelchair_mapping::kOccupied;
+    for (int ix = 10; ix < 18; ++ix) g.at(ix, iy) = wheelchair_core::kOccupied;
   const LocalizationMap map(wheelchair_mapping::toMrptGrid(g), 10.0);
   const auto d = [&](int ix, int iy) { return map.obstacleDistance()[iy * g.width + ix]; };
   EXPECT_NEAR(d(10, 10), 0.0, 1e-6);   // surface

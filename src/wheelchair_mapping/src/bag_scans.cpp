@@ -4,7 +4,7 @@
 #include <tf2/exceptions.h>
 #include <tf2_msgs/TFMessage.h>
 #include <wheelchair_mapping/bag_scans.h>
-#include <wheelchair_mapping/ros_conversions.h>
+#include <wheelchair_ros/conversions.h>
 
 #include <stdexcept>
 #include <string>
@@ -65,8 +65,9 @@ bool BagScanReader::next(LogScan& out) {
       problems_ += path_ + ":scan " + std::to_string(index) + ": no tf: " + e.what();
       continue;
     }
-    out.scan = fromLaserScanMsg(*msg);
-    if (laserPose2D(t.transform, out.laser_pose)) mirrorScanAngles(out.scan);
+    out.scan = wheelchair_ros::fromLaserScanMsg(*msg);
+    if (wheelchair_ros::laserPose2D(t.transform, out.laser_pose))
+      wheelchair_core::mirrorScanAngles(out.scan);
     out.line = index;
     ++impl_->it;
     return true;

@@ -1,5 +1,5 @@
+#include <wheelchair_core/ray_trace.h>
 #include <wheelchair_mapping/bayes_mapper.h>
-#include <wheelchair_mapping/ray_trace.h>
 #include <wheelchair_mapping/scan_checks.h>
 
 #include <algorithm>
@@ -43,7 +43,7 @@ double BayesMapper::effectiveHitProbability() const { return 1.0 - Grid::l2p(-lo
 
 double BayesMapper::effectivePassProbability() const { return 1.0 - Grid::l2p(logodds_pass_); }
 
-OccupancyMap BayesMapper::map(const GridThresholds& thresholds) const {
+wheelchair_core::OccupancyMap BayesMapper::map(const GridThresholds& thresholds) const {
   return fromMrptGrid(grid_, thresholds);
 }
 
@@ -70,7 +70,7 @@ void BayesMapper::growToFit(double x_min, double x_max, double y_min, double y_m
 }
 
 // Cells across the beam's footprint at the return, one per half cell along the arc.
-void BayesMapper::markFootprint(const Pose2D& pose, double angle, double range) {
+void BayesMapper::markFootprint(const wheelchair_core::Pose2D& pose, double angle, double range) {
   const double half_width = range * std::tan(config_.model.beam_width / 2);
   const double res = grid_.getResolution();
   const int steps = static_cast<int>(std::ceil(half_width / (res / 2)));
@@ -88,13 +88,14 @@ void BayesMapper::markFootprint(const Pose2D& pose, double angle, double range) 
   }
 }
 
-InsertResult BayesMapper::insert(const LaserScan2D& scan, const Pose2D& pose) {
+InsertResult BayesMapper::insert(const wheelchair_core::LaserScan2D& scan,
+                                 const wheelchair_core::Pose2D& pose) {
   InsertResult result;
   if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw)) {
     result.reason = "sensor pose is not finite";
     return result;
   }
-  result.reason = scanProblem(scan, config_.expected_beams);
+  result.reason = wheelchair_core::scanGeometryProblem(scan, config_.expected_beams);
   if (!result.reason.empty()) return result;
   if (scan.stamp < last_stamp_) {
     std::ostringstream msg;
@@ -132,7 +133,7 @@ InsertResult BayesMapper::insert(const LaserScan2D& scan, const Pose2D& pose) {
     const double gx1 = gx0 + uses[i].length * std::cos(a) / res;
     const double gy1 = gy0 + uses[i].length * std::sin(a) / res;
     const bool hit = uses[i].kind == BeamUse::kHit;
-    traceCells(gx0, gy0, gx1, gy1, [&](int ix, int iy, bool last) {
+    wheelchair_core::traceCells(gx0, gy0, gx1, gy1, [&](int ix, int iy, bool last) {
       if (!(hit && last)) markFree(ix, iy);
     });
     if (hit && config_.model.beam_width > 0) {

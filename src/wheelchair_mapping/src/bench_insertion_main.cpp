@@ -15,7 +15,7 @@ int main() {
   using namespace wheelchair_mapping;
   const auto truth = toMrptGrid(test::syntheticRoom());
   const auto poses = test::loopTrajectory();
-  std::vector<LaserScan2D> scans;
+  std::vector<wheelchair_core::LaserScan2D> scans;
   for (size_t k = 0; k < poses.size(); ++k) scans.push_back(test::simulateScan(truth, poses[k], 0));
   BayesMapper mapper(MapperConfig{});
   // Wall time, and this thread's CPU time (insensitive to other processes on a busy machine).
@@ -27,7 +27,7 @@ int main() {
   std::vector<double> ms, cpu;
   constexpr int kInsertions = 3000;
   for (int i = 0; i < kInsertions; ++i) {
-    LaserScan2D scan = scans[i % scans.size()];
+    wheelchair_core::LaserScan2D scan = scans[i % scans.size()];
     scan.stamp = i;
     const double c0 = cpu_ms();
     const auto t0 = std::chrono::steady_clock::now();

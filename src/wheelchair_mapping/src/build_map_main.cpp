@@ -3,11 +3,11 @@
 // use the corrected logs for true poses) or a rosbag (LaserScan + tf), writes map.yaml +
 // map.pgm and a PNG preview.
 #include <sys/resource.h>
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_mapping/bag_scans.h>
 #include <wheelchair_mapping/bayes_mapper.h>
 #include <wheelchair_mapping/carmen_log.h>
 #include <wheelchair_mapping/map_consistency.h>
-#include <wheelchair_mapping/map_io.h>
 #include <wheelchair_mapping/map_preview.h>
 #include <wheelchair_mapping/progress_bar.h>
 
@@ -134,8 +134,8 @@ int build(Reader& reader, const Args& a) {
     std::cerr << a.log << ": no usable laser scan in the log\n";
     return 1;
   }
-  const OccupancyMap map = mapper.map();
-  saveMap(map, a.out);
+  const wheelchair_core::OccupancyMap map = mapper.map();
+  wheelchair_core::saveMap(map, a.out);
   savePreviewPng(mapper.grid(), a.preview);
   EndpointConsistency consistency;
   for (const LogScan& s : held_out) {

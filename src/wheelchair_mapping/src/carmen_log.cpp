@@ -36,7 +36,7 @@ bool numbers(const std::vector<std::string>& tokens, size_t first, size_t count,
 }
 
 void fillRanges(const std::vector<double>& readings, const CarmenOptions& options,
-                LaserScan2D& scan) {
+                wheelchair_core::LaserScan2D& scan) {
   scan.ranges.resize(readings.size());
   for (size_t i = 0; i < readings.size(); ++i) {
     scan.ranges[i] =
@@ -44,7 +44,7 @@ void fillRanges(const std::vector<double>& readings, const CarmenOptions& option
   }
 }
 
-bool finitePose(const Pose2D& p) {
+bool finitePose(const wheelchair_core::Pose2D& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.yaw);
 }
 
@@ -66,7 +66,7 @@ bool parseFlaser(const std::vector<std::string>& t, const CarmenOptions& options
     error = std::to_string(t.size()) + " fields, expected " + std::to_string(beams + 11);
     return false;
   }
-  LaserScan2D& s = out.scan;
+  wheelchair_core::LaserScan2D& s = out.scan;
   const double fov = M_PI;
   s.angle_increment = beams % 2 == 0 ? fov / beams : fov / std::max<size_t>(beams - 1, 1);
   s.angle_min = -fov / 2;
@@ -104,7 +104,7 @@ bool parseRobotLaser(const std::vector<std::string>& t, const CarmenOptions& opt
     error = std::to_string(t.size()) + " fields, expected " + std::to_string(after + 14);
     return false;
   }
-  LaserScan2D& s = out.scan;
+  wheelchair_core::LaserScan2D& s = out.scan;
   s.angle_min = head[1];
   s.angle_increment = head[3];
   s.angle_max = s.angle_min + (beams - 1) * s.angle_increment;

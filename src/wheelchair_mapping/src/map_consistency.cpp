@@ -5,7 +5,8 @@
 
 namespace wheelchair_mapping {
 
-void addEndpoints(const OccupancyMap& map, const LaserScan2D& scan, const Pose2D& pose,
+void addEndpoints(const wheelchair_core::OccupancyMap& map,
+                  const wheelchair_core::LaserScan2D& scan, const wheelchair_core::Pose2D& pose,
                   double max_range, EndpointConsistency& tally) {
   const double limit = std::min(scan.range_max, max_range);
   for (size_t i = 0; i < scan.ranges.size(); ++i) {
@@ -15,11 +16,12 @@ void addEndpoints(const OccupancyMap& map, const LaserScan2D& scan, const Pose2D
     const double a = pose.yaw + scan.angle_min + i * scan.angle_increment;
     int ix, iy;
     if (!map.worldToCell(pose.x + r * std::cos(a), pose.y + r * std::sin(a), ix, iy)) continue;
-    if (map.at(ix, iy) == kOccupied) ++tally.on_occupied;
+    if (map.at(ix, iy) == wheelchair_core::kOccupied) ++tally.on_occupied;
     bool near = false;
     for (int dy = -1; dy <= 1 && !near; ++dy) {
       for (int dx = -1; dx <= 1 && !near; ++dx) {
-        near = map.inBounds(ix + dx, iy + dy) && map.at(ix + dx, iy + dy) == kOccupied;
+        near = map.inBounds(ix + dx, iy + dy) &&
+               map.at(ix + dx, iy + dy) == wheelchair_core::kOccupied;
       }
     }
     if (near) ++tally.near_occupied;

@@ -1,17 +1,17 @@
 // rosrun wheelchair_mapping map_server <map.yaml>   (or _map_file:=<map.yaml>)
 // Checks the map file first, so that a bad or missing file ends the process with one fatal
 // line and exit code 1, then runs MapServerNodelet.
-#include <wheelchair_common/nodelet_main.h>
-#include <wheelchair_mapping/map_io.h>
+#include <wheelchair_core/map_io.h>
+#include <wheelchair_ros/nodelet_main.h>
 
 namespace {
 
 /// True if `path` is a loadable map; else one FATAL line naming the file and the problem.
 bool mapFileIsGood(const std::string& path) {
   try {
-    wheelchair_mapping::loadMap(path);
+    wheelchair_core::loadMap(path);
     return true;
-  } catch (const wheelchair_mapping::MapFileError& e) {
+  } catch (const wheelchair_core::MapFileError& e) {
     ROS_FATAL("%s", e.what());
     return false;
   }
@@ -38,6 +38,6 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (!mapFileIsGood(path)) return 1;
-  return wheelchair_common::runNodeletMain(argc, argv, "map_server",
-                                           "wheelchair_mapping/MapServerNodelet");
+  return wheelchair_ros::runNodeletMain(argc, argv, "map_server",
+                                        "wheelchair_mapping/MapServerNodelet");
 }

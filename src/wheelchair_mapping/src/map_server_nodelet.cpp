@@ -3,8 +3,8 @@
 #include <nav_msgs/GetMap.h>
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
-#include <wheelchair_mapping/map_io.h>
-#include <wheelchair_mapping/ros_conversions.h>
+#include <wheelchair_core/map_io.h>
+#include <wheelchair_ros/conversions.h>
 #include <pluginlib/class_list_macros.hpp>
 
 namespace wheelchair_mapping {
@@ -23,8 +23,9 @@ class MapServerNodelet : public nodelet::Nodelet {
     }
     const std::string frame_id = pnh.param<std::string>("frame_id", "map");
     try {
-      map_ = toOccupancyGrid(loadMap(path), frame_id, ros::Time::now());
-    } catch (const MapFileError& e) {
+      map_ = wheelchair_ros::toOccupancyGrid(wheelchair_core::loadMap(path), frame_id,
+                                             ros::Time::now());
+    } catch (const wheelchair_core::MapFileError& e) {
       NODELET_FATAL("%s", e.what());  // publish nothing: a wrong map is worse than none
       return;
     }

@@ -9,9 +9,9 @@
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_mapping/bayes_mapper.h>
-#include <wheelchair_mapping/map_io.h>
-#include <wheelchair_mapping/ros_conversions.h>
+#include <wheelchair_ros/conversions.h>
 #include <pluginlib/class_list_macros.hpp>
 
 #include <memory>
@@ -55,8 +55,8 @@ class MappingNodelet : public nodelet::Nodelet {
   }
 
   /// Laser pose in pose_frame_ at the scan's time; false (with a reason) if unknown.
-  bool laserPose(const sensor_msgs::LaserScan& msg, Pose2D& pose, bool& upside_down,
-                 std::string& reason) {
+  bool laserPose(const sensor_msgs::LaserScan& msg, wheelchair_core::Pose2D& pose,
+                 bool& upside_down, std::string& reason) {
     geometry_msgs::TransformStamped t;
     try {
       t = tf_buffer_.lookupTransform(pose_frame_, msg.header.frame_id, msg.header.stamp,
@@ -65,20 +65,20 @@ class MappingNodelet : public nodelet::Nodelet {
       reason = std::string("no tf ") + pose_frame_ + " -> " + msg.header.frame_id + ": " + e.what();
       return false;
     }
-    upside_down = laserPose2D(t.transform, pose);
+    upside_down = wheelchair_ros::laserPose2D(t.transform, pose);
     return true;
   }
 
   void onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
-    Pose2D pose;
+    wheelchair_core::Pose2D pose;
     bool upside_down = false;
     std::string reason;
     if (!laserPose(*msg, pose, upside_down, reason)) {
       NODELET_WARN_THROTTLE(5.0, "scan skipped: %s", reason.c_str());
       return;
     }
-    LaserScan2D scan = fromLaserScanMsg(*msg);
-    if (upside_down) mirrorScanAngles(scan);
+    wheelchair_core::LaserScan2D scan = wheelchair_ros::fromLaserScanMsg(*msg);
+    if (upside_down) wheelchair_core::mirrorScanAngles(scan);
     std::lock_guard<std::mutex> lock(mutex_);
     const InsertResult r = mapper_->insert(scan, pose);
     if (!r.inserted) {
@@ -91,7 +91,7 @@ class MappingNodelet : public nodelet::Nodelet {
   nav_msgs::OccupancyGrid currentMap() {
     std::lock_guard<std::mutex> lock(mutex_);
     changed_ = false;
-    return toOccupancyGrid(mapper_->map(), pose_frame_, ros::Time::now());
+    return wheelchair_ros::toOccupancyGrid(mapper_->map(), pose_frame_, ros::Time::now());
   }
 
   void publish() {
@@ -107,15 +107,15 @@ class MappingNodelet : public nodelet::Nodelet {
   bool onSave(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
     const std::string path = getPrivateNodeHandle().param<std::string>("save_path", "map.yaml");
     try {
-      OccupancyMap map;
+      wheelchair_core::OccupancyMap map;
       {
         std::lock_guard<std::mutex> lock(mutex_);
         map = mapper_->map();
       }
-      saveMap(map, path);
+      wheelchair_core::saveMap(map, path);
       res.success = true;
       res.message = "saved " + path;
-    } catch (const MapFileError& e) {
+    } catch (const wheelchair_core::MapFileError& e) {
       res.success = false;
       res.message = e.what();
       NODELET_ERROR("%s", e.what());

@@ -20,10 +20,10 @@ class ExactOriginGrid : public mrpt::maps::COccupancyGridMap2D {
 
 }  // namespace
 
-mrpt::maps::COccupancyGridMap2D toMrptGrid(const OccupancyMap& map) {
+mrpt::maps::COccupancyGridMap2D toMrptGrid(const wheelchair_core::OccupancyMap& map) {
   if (map.width <= 0 || map.height <= 0 || !(map.resolution > 0) ||
       map.data.size() != static_cast<size_t>(map.width) * map.height) {
-    throw std::invalid_argument("toMrptGrid: empty or inconsistent OccupancyMap");
+    throw std::invalid_argument("toMrptGrid: empty or inconsistent wheelchair_core::OccupancyMap");
   }
   if (map.origin_yaw != 0.0) throw std::invalid_argument("toMrptGrid: origin_yaw must be 0");
   const auto res = static_cast<float>(map.resolution);
@@ -44,15 +44,15 @@ mrpt::maps::COccupancyGridMap2D toMrptGrid(const OccupancyMap& map) {
   return grid;
 }
 
-OccupancyMap fromMrptGrid(const mrpt::maps::COccupancyGridMap2D& grid,
-                          const GridThresholds& thresholds) {
-  OccupancyMap map;
+wheelchair_core::OccupancyMap fromMrptGrid(const mrpt::maps::COccupancyGridMap2D& grid,
+                                           const GridThresholds& thresholds) {
+  wheelchair_core::OccupancyMap map;
   map.resolution = grid.getResolution();
   map.origin_x = grid.getXMin();
   map.origin_y = grid.getYMin();
   map.width = static_cast<int>(grid.getSizeX());
   map.height = static_cast<int>(grid.getSizeY());
-  map.data.assign(static_cast<size_t>(map.width) * map.height, kUnknown);
+  map.data.assign(static_cast<size_t>(map.width) * map.height, wheelchair_core::kUnknown);
   const auto prior = mrpt::maps::COccupancyGridMap2D::p2l(0.5f);
   const auto& raw = grid.getRawMap();
   for (int iy = 0; iy < map.height; ++iy) {
@@ -61,11 +61,12 @@ OccupancyMap fromMrptGrid(const mrpt::maps::COccupancyGridMap2D& grid,
       const double p_occ = 1.0 - mrpt::maps::COccupancyGridMap2D::l2p(raw[i]);
       int8_t& cell = map.data[i];
       if (!thresholds.trinary) {
-        cell = raw[i] == prior ? kUnknown : static_cast<int8_t>(std::lround(100.0 * p_occ));
+        cell = raw[i] == prior ? wheelchair_core::kUnknown
+                               : static_cast<int8_t>(std::lround(100.0 * p_occ));
       } else if (p_occ > thresholds.occupied_thresh) {
-        cell = kOccupied;
+        cell = wheelchair_core::kOccupied;
       } else if (p_occ < thresholds.free_thresh) {
-        cell = kFree;
+        cell = wheelchair_core::kFree;
       }
     }
   }

@@ -4,8 +4,9 @@
 
 namespace wheelchair_mapping {
 
-LaserScan2D laserScanFromMrpt(const mrpt::obs::CObservation2DRangeScan& scan, double stamp) {
-  LaserScan2D out;
+wheelchair_core::LaserScan2D laserScanFromMrpt(const mrpt::obs::CObservation2DRangeScan& scan,
+                                               double stamp) {
+  wheelchair_core::LaserScan2D out;
   const size_t n = scan.getScanSize();
   const double step = n > 1 ? scan.aperture / (n - 1) : 0.0;
   out.stamp = stamp;

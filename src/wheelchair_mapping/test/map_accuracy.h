@@ -3,7 +3,7 @@
 // thickest wall away from the truth's junctions, and how far occupied cells spill off the walls.
 #pragma once
 
-#include <wheelchair_mapping/occupancy_map.h>
+#include <wheelchair_core/occupancy_map.h>
 
 #include <algorithm>
 
@@ -17,8 +17,10 @@ struct Accuracy {
   double fraction() const { return observed ? static_cast<double>(correct) / observed : 0.0; }
 };
 
-inline int occupiedRun(const OccupancyMap& m, int x, int y, int dx, int dy) {
-  auto occupied = [&m](int cx, int cy) { return m.inBounds(cx, cy) && m.at(cx, cy) == kOccupied; };
+inline int occupiedRun(const wheelchair_core::OccupancyMap& m, int x, int y, int dx, int dy) {
+  auto occupied = [&m](int cx, int cy) {
+    return m.inBounds(cx, cy) && m.at(cx, cy) == wheelchair_core::kOccupied;
+  };
   int n = 1;
   for (int k = 1; occupied(x + k * dx, y + k * dy); ++k) ++n;
   for (int k = 1; occupied(x - k * dx, y - k * dy); ++k) ++n;
@@ -27,10 +29,10 @@ inline int occupiedRun(const OccupancyMap& m, int x, int y, int dx, int dy) {
 
 // True where two walls of the ground truth meet (corners, T-junctions) or within 5 cells of
 // it: there a wall has no single thickness.
-inline bool nearJunction(const OccupancyMap& truth, int tx, int ty) {
+inline bool nearJunction(const wheelchair_core::OccupancyMap& truth, int tx, int ty) {
   for (int y = ty - 5; y <= ty + 5; ++y) {
     for (int x = tx - 5; x <= tx + 5; ++x) {
-      if (truth.inBounds(x, y) && truth.at(x, y) == kOccupied &&
+      if (truth.inBounds(x, y) && truth.at(x, y) == wheelchair_core::kOccupied &&
           std::min(occupiedRun(truth, x, y, 1, 0), occupiedRun(truth, x, y, 0, 1)) > 2) {
         return true;
       }
@@ -42,10 +44,11 @@ inline bool nearJunction(const OccupancyMap& truth, int tx, int ty) {
 // Calls visit(x, y, in_truth, tx, ty) for every occupied cell (x, y) of the built map, with the
 // truth's cell at the same place (in_truth false: the place is outside the truth).
 template <typename Visit>
-void forEachOccupied(const OccupancyMap& built, const OccupancyMap& truth, Visit&& visit) {
+void forEachOccupied(const wheelchair_core::OccupancyMap& built,
+                     const wheelchair_core::OccupancyMap& truth, Visit&& visit) {
   for (int y = 0; y < built.height; ++y) {
     for (int x = 0; x < built.width; ++x) {
-      if (built.at(x, y) != kOccupied) continue;
+      if (built.at(x, y) != wheelchair_core::kOccupied) continue;
       double wx, wy;
       int tx = -1, ty = -1;
       built.cellToWorld(x, y, wx, wy);
@@ -57,7 +60,8 @@ void forEachOccupied(const OccupancyMap& built, const OccupancyMap& truth, Visit
 
 // Wall thickness at an occupied cell away from junctions: the shorter of its horizontal and
 // vertical runs of occupied cells (the run across the wall it stands in).
-inline int maxWallThickness(const OccupancyMap& built, const OccupancyMap& truth) {
+inline int maxWallThickness(const wheelchair_core::OccupancyMap& built,
+                            const wheelchair_core::OccupancyMap& truth) {
   int worst = 0;
   forEachOccupied(built, truth, [&](int x, int y, bool in_truth, int tx, int ty) {
     if (in_truth && nearJunction(truth, tx, ty)) return;
@@ -69,11 +73,11 @@ inline int maxWallThickness(const OccupancyMap& built, const OccupancyMap& truth
 
 // Chebyshev distance [cells] from truth cell (tx, ty) to the nearest occupied truth cell, at
 // most `cap` (also when there is none within it).
-inline int distanceToWall(const OccupancyMap& truth, int tx, int ty, int cap) {
+inline int distanceToWall(const wheelchair_core::OccupancyMap& truth, int tx, int ty, int cap) {
   for (int d = 0; d < cap; ++d) {
     for (int y = ty - d; y <= ty + d; ++y) {
       for (int x = tx - d; x <= tx + d; ++x) {
-        if (truth.inBounds(x, y) && truth.at(x, y) == kOccupied) return d;
+        if (truth.inBounds(x, y) && truth.at(x, y) == wheelchair_core::kOccupied) return d;
       }
     }
   }
@@ -82,7 +86,8 @@ inline int distanceToWall(const OccupancyMap& truth, int tx, int ty, int cap) {
 
 // The farthest any occupied cell of the built map lies from a wall of the truth [cells]: what
 // range noise and pose errors put in front of (or behind) the walls. Outside the truth: `cap`.
-inline int maxSpill(const OccupancyMap& built, const OccupancyMap& truth, int cap = 10) {
+inline int maxSpill(const wheelchair_core::OccupancyMap& built,
+                    const wheelchair_core::OccupancyMap& truth, int cap = 10) {
   int worst = 0;
   forEachOccupied(built, truth, [&](int, int, bool in_truth, int tx, int ty) {
     worst = std::max(worst, in_truth ? distanceToWall(truth, tx, ty, cap) : cap);
@@ -90,12 +95,13 @@ inline int maxSpill(const OccupancyMap& built, const OccupancyMap& truth, int ca
   return worst;
 }
 
-inline Accuracy compare(const OccupancyMap& built, const OccupancyMap& truth) {
+inline Accuracy compare(const wheelchair_core::OccupancyMap& built,
+                        const wheelchair_core::OccupancyMap& truth) {
   Accuracy a;
   for (int iy = 0; iy < built.height; ++iy) {
     for (int ix = 0; ix < built.width; ++ix) {
       const int8_t v = built.at(ix, iy);
-      if (v == kUnknown) continue;
+      if (v == wheelchair_core::kUnknown) continue;
       double x, y;
       int tx, ty;
       built.cellToWorld(ix, iy, x, y);
@@ -104,7 +110,10 @@ inline Accuracy compare(const OccupancyMap& built, const OccupancyMap& truth) {
         continue;
       }
       ++a.observed;
-      a.correct += ((v == kOccupied) == (truth.at(tx, ty) == kOccupied)) ? 1 : 0;
+      a.correct +=
+          ((v == wheelchair_core::kOccupied) == (truth.at(tx, ty) == wheelchair_core::kOccupied))
+              ? 1
+              : 0;
     }
   }
   a.max_wall_run = maxWallThickness(built, truth);

@@ -4,9 +4,9 @@
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/random/RandomGenerators.h>
+#include <wheelchair_core/occupancy_map.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 #include <wheelchair_mapping/mrpt_scan.h>
-#include <wheelchair_mapping/occupancy_map.h>
 
 #include <cmath>
 #include <vector>
@@ -14,20 +14,20 @@
 namespace wheelchair_mapping::test {
 
 /// A 10 m x 8 m room (walls 0.1 m thick) with a 1.0 x 0.6 m box and an L-shaped partition.
-inline OccupancyMap syntheticRoom() {
-  OccupancyMap map;
+inline wheelchair_core::OccupancyMap syntheticRoom() {
+  wheelchair_core::OccupancyMap map;
   map.resolution = 0.05;
   map.origin_x = -1.0;
   map.origin_y = -1.0;
   map.width = 240;
   map.height = 200;
-  map.data.assign(static_cast<size_t>(map.width) * map.height, kFree);
+  map.data.assign(static_cast<size_t>(map.width) * map.height, wheelchair_core::kFree);
   auto box = [&map](double x0, double y0, double x1, double y1) {
     for (int iy = 0; iy < map.height; ++iy) {
       for (int ix = 0; ix < map.width; ++ix) {
         double x, y;
         map.cellToWorld(ix, iy, x, y);
-        if (x > x0 && x < x1 && y > y0 && y < y1) map.at(ix, iy) = kOccupied;
+        if (x > x0 && x < x1 && y > y0 && y < y1) map.at(ix, iy) = wheelchair_core::kOccupied;
       }
     }
   };
@@ -42,8 +42,8 @@ inline OccupancyMap syntheticRoom() {
 }
 
 /// 30 sensor poses along a loop through the room (the paper's protocol: 30 scans).
-inline std::vector<Pose2D> loopTrajectory() {
-  std::vector<Pose2D> poses;
+inline std::vector<wheelchair_core::Pose2D> loopTrajectory() {
+  std::vector<wheelchair_core::Pose2D> poses;
   for (int k = 0; k < 30; ++k) {
     const double t = 2 * M_PI * k / 30;
     poses.push_back({5.0 + 3.2 * std::cos(t), 4.0 + 2.4 * std::sin(t), t + M_PI / 2});
@@ -55,8 +55,9 @@ inline std::vector<Pose2D> loopTrajectory() {
 /// MRPT's simulator gives up (no echo) at about 0.8 maxRange, so it is asked for 1.5 x range_max
 /// and returns beyond range_max are turned into +inf (no return within range), as a real
 /// scanner reports them.
-inline LaserScan2D simulateScan(const mrpt::maps::COccupancyGridMap2D& truth, const Pose2D& pose,
-                                double stamp, double noise_std = 0.0) {
+inline wheelchair_core::LaserScan2D simulateScan(const mrpt::maps::COccupancyGridMap2D& truth,
+                                                 const wheelchair_core::Pose2D& pose, double stamp,
+                                                 double noise_std = 0.0) {
   constexpr double kRangeMax = 8.0;
   mrpt::obs::CObservation2DRangeScan obs;
   obs.aperture = static_cast<float>(M_PI);
@@ -64,7 +65,7 @@ inline LaserScan2D simulateScan(const mrpt::maps::COccupancyGridMap2D& truth, co
   obs.rightToLeft = true;
   truth.laserScanSimulator(obs, mrpt::poses::CPose2D(pose.x, pose.y, pose.yaw), 0.5f, 361,
                            static_cast<float>(noise_std));
-  LaserScan2D scan = laserScanFromMrpt(obs, stamp);
+  wheelchair_core::LaserScan2D scan = laserScanFromMrpt(obs, stamp);
   scan.range_max = kRangeMax;
   for (float& r : scan.ranges) {
     if (r > kRangeMax) r = INFINITY;

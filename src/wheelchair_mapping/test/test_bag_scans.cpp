@@ -40,7 +40,7 @@ sensor_msgs::LaserScan scanAt(double t) {
 }
 
 TEST(BagScans, PosesFromTfAndScansWithoutTfSkipped) {
-  test::TempDir dir;
+  wheelchair_core::test::TempDir dir;
   const std::string path = dir.file("drive.bag");
   {
     rosbag::Bag bag(path, rosbag::bagmode::Write);
@@ -72,9 +72,9 @@ TEST(BagScans, PosesFromTfAndScansWithoutTfSkipped) {
   EXPECT_NE(reader.problemsOfLastCall().find(path + ":scan 6: no tf"), std::string::npos)
       << reader.problemsOfLastCall();
   int ix, iy;
-  const OccupancyMap map = mapper.map();
+  const wheelchair_core::OccupancyMap map = mapper.map();
   ASSERT_TRUE(map.worldToCell(5.325, 0.025, ix, iy));
-  EXPECT_EQ(map.at(ix, iy), kOccupied);
+  EXPECT_EQ(map.at(ix, iy), wheelchair_core::kOccupied);
   EXPECT_THROW(BagScanReader(dir.file("none.bag"), "/scan", "odom"), std::runtime_error);
 }
 

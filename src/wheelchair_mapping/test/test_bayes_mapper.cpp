@@ -7,9 +7,9 @@
 namespace wheelchair_mapping {
 namespace {
 
-LaserScan2D fan(double angle_min, double angle_increment, const std::vector<float>& ranges,
-                double stamp = 1.0) {
-  LaserScan2D scan;
+wheelchair_core::LaserScan2D fan(double angle_min, double angle_increment,
+                                 const std::vector<float>& ranges, double stamp = 1.0) {
+  wheelchair_core::LaserScan2D scan;
   scan.stamp = stamp;
   scan.angle_min = angle_min;
   scan.angle_increment = angle_increment;
@@ -24,7 +24,7 @@ double occ(const BayesMapper& m, double x, double y) {
   return 1.0 - m.grid().getPos(static_cast<float>(x), static_cast<float>(y));
 }
 
-const Pose2D kOrigin{0.025, 0.025, 0.0};
+const wheelchair_core::Pose2D kOrigin{0.025, 0.025, 0.0};
 
 TEST(BayesMapper, HitMarksFreeThenOccupied) {
   BayesMapper m(MapperConfig{});
@@ -70,7 +70,7 @@ TEST(BayesMapper, NanMinusInfAndOutOfRangeBeamsAreSkipped) {
 TEST(BayesMapper, AsymmetricFieldOfViewAndClockwiseScanners) {
   BayesMapper m(MapperConfig{});
   // Clockwise: ranges[0] at +90 deg, ranges[2] at -90 deg; the sensor faces +y (yaw 90 deg).
-  const Pose2D pose{0.025, 0.025, M_PI / 2};
+  const wheelchair_core::Pose2D pose{0.025, 0.025, M_PI / 2};
   ASSERT_TRUE(m.insert(fan(M_PI / 2, -M_PI / 2, {1.0f, 2.0f, 3.0f}), pose).inserted);
   EXPECT_GT(occ(m, -0.975, 0.025), 0.5);  // +90 deg from +y is -x
   EXPECT_GT(occ(m, 0.025, 2.025), 0.5);   // straight ahead
@@ -85,20 +85,21 @@ TEST(BayesMapper, SkipsBadScansWithAReasonAndLeavesTheGridUntouched) {
   ASSERT_TRUE(m.insert(fan(-M_PI / 2, M_PI / 360, good, 10.0), kOrigin).inserted);
   const auto before = m.grid().getRawMap();
   struct Case {
-    LaserScan2D scan;
-    Pose2D pose;
+    wheelchair_core::LaserScan2D scan;
+    wheelchair_core::Pose2D pose;
     std::string reason;
   };
   std::vector<Case> cases;
   cases.push_back({fan(-M_PI / 2, M_PI / 359, std::vector<float>(360, 3.0f), 11.0), kOrigin,
                    "wrong beam count"});
-  LaserScan2D lying = fan(-M_PI / 2, M_PI / 360, good, 11.0);
+  wheelchair_core::LaserScan2D lying = fan(-M_PI / 2, M_PI / 360, good, 11.0);
   lying.angle_max = 0.3;  // angles say fewer beams than there are ranges
   cases.push_back({lying, kOrigin, "wrong beam count"});
   cases.push_back(
       {fan(-M_PI / 2, M_PI / 360, std::vector<float>(361, NAN), 11.0), kOrigin, "no usable beam"});
   cases.push_back({fan(-M_PI / 2, M_PI / 360, good, 9.5), kOrigin, "time went backwards"});
-  cases.push_back({fan(-M_PI / 2, M_PI / 360, good, 11.0), Pose2D{NAN, 0, 0}, "not finite"});
+  cases.push_back(
+      {fan(-M_PI / 2, M_PI / 360, good, 11.0), wheelchair_core::Pose2D{NAN, 0, 0}, "not finite"});
   cases.push_back({fan(-M_PI / 2, 0.0, good, 11.0), kOrigin, "increment is zero"});
   for (const auto& c : cases) {
     const auto r = m.insert(c.scan, c.pose);
@@ -114,7 +115,8 @@ TEST(BayesMapper, GrowsToFitScansAndKeepsWhatItHad) {
   config.initial_size = 4.0;
   BayesMapper m(config);
   ASSERT_TRUE(m.insert(fan(0.0, 0.1, {1.0f}), kOrigin).inserted);
-  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {7.0f}, 2.0), Pose2D{20.025, -30.025, M_PI}).inserted);
+  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {7.0f}, 2.0), wheelchair_core::Pose2D{20.025, -30.025, M_PI})
+                  .inserted);
   EXPECT_GT(occ(m, 1.03, 0.025), 0.5);
   EXPECT_GT(occ(m, 13.03, -30.025), 0.5);
   EXPECT_LE(m.grid().getXMin(), 0.0f);

@@ -78,14 +78,14 @@ void writeGz(const std::string& path, const std::string& text, size_t cut = 0) {
 }
 
 TEST(CarmenLog, ReaderReportsCorruptLinesByNumberAndReadsGzip) {
-  test::TempDir dir;
+  wheelchair_core::test::TempDir dir;
   const std::string text = "PARAM a b\n" + flaser(180, 2.0, 0, 0, 0, 1) + "\n" +
                            "FLASER 180 1 2 3\n" + flaser(180, 2.0, 0.1, 0, 0, 2) + "\n";
   for (const std::string name : {"log.txt", "log.gz"}) {
     if (name == "log.gz") {
       writeGz(dir.file(name), text);
     } else {
-      test::writeText(dir.file(name), text);
+      wheelchair_core::test::writeText(dir.file(name), text);
     }
     CarmenLogReader reader(dir.file(name));
     LogScan s;
@@ -104,7 +104,7 @@ TEST(CarmenLog, ReaderReportsCorruptLinesByNumberAndReadsGzip) {
 }
 
 TEST(CarmenLog, TruncatedGzipEndsWithAReportedProblem) {
-  test::TempDir dir;
+  wheelchair_core::test::TempDir dir;
   std::string text;
   for (int i = 0; i < 200; ++i) text += flaser(180, 2.0 + i * 0.001, 0, 0, 0, i) + "\n";
   writeGz(dir.file("cut.gz"), text, 2000);

@@ -10,8 +10,8 @@ namespace {
 double sigmoid(double l) { return 1.0 / (1.0 + std::exp(-l)); }
 
 // One beam straight along +x, returning at `range`.
-LaserScan2D singleBeam(double range, double stamp = 0.0) {
-  LaserScan2D scan;
+wheelchair_core::LaserScan2D singleBeam(double range, double stamp = 0.0) {
+  wheelchair_core::LaserScan2D scan;
   scan.stamp = stamp;
   scan.angle_min = scan.angle_max = 0.0;
   scan.angle_increment = 0.01;
@@ -52,7 +52,8 @@ TEST(ElfesUpdate, MrptCellsFollowEquationOneExactlyOnTheLattice) {
   EXPECT_NEAR(mapper.effectiveHitProbability(), config.model.p_occ_hit, 1e-6);
   double p_hit_cell = 0.5, p_free_cell = 0.5;
   for (int k = 0; k < 4; ++k) {
-    ASSERT_TRUE(mapper.insert(singleBeam(2.025, k), Pose2D{0.0, 0.025, 0.0}).inserted);
+    ASSERT_TRUE(
+        mapper.insert(singleBeam(2.025, k), wheelchair_core::Pose2D{0.0, 0.025, 0.0}).inserted);
     p_hit_cell = elfesUpdate(config.model.p_occ_hit, p_hit_cell);
     p_free_cell = elfesUpdate(config.model.p_occ_pass, p_free_cell);
     EXPECT_NEAR(occupancyAt(mapper, 2.025, 0.025), p_hit_cell, 1e-5) << "update " << k;
@@ -67,7 +68,8 @@ TEST(ElfesUpdate, MrptCellsFollowEquationOneWithinQuantization) {
     MapperConfig config;
     config.model.p_occ_hit = p_hit;
     BayesMapper mapper(config);
-    ASSERT_TRUE(mapper.insert(singleBeam(3.525), Pose2D{0.0, 0.025, 0.0}).inserted);
+    ASSERT_TRUE(
+        mapper.insert(singleBeam(3.525), wheelchair_core::Pose2D{0.0, 0.025, 0.0}).inserted);
     const double expected = elfesUpdate(p_hit, 0.5);
     EXPECT_NEAR(occupancyAt(mapper, 3.525, 0.025), expected, expected * (1 - expected) / 32 + 1e-6)
         << "P_s = " << p_hit;

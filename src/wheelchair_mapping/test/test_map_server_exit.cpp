@@ -38,7 +38,7 @@ std::vector<std::string> fatalLines(const std::string& output) {
 }
 
 TEST(MapServerExit, MissingYaml) {
-  test::TempDir dir;
+  wheelchair_core::test::TempDir dir;
   const RunResult r = runMapServer(dir.file("missing.yaml"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   const auto lines = fatalLines(r.output);
@@ -48,9 +48,10 @@ TEST(MapServerExit, MissingYaml) {
 }
 
 TEST(MapServerExit, NegativeResolution) {
-  test::TempDir dir;
-  test::writePgm(dir.file("n.pgm"), 1, 1, {0});
-  test::writeText(dir.file("n.yaml"), test::mapYaml("n.pgm", "-0.05"));
+  wheelchair_core::test::TempDir dir;
+  wheelchair_core::test::writePgm(dir.file("n.pgm"), 1, 1, {0});
+  wheelchair_core::test::writeText(dir.file("n.yaml"),
+                                   wheelchair_core::test::mapYaml("n.pgm", "-0.05"));
   const RunResult r = runMapServer(dir.file("n.yaml"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   const auto lines = fatalLines(r.output);

@@ -27,10 +27,12 @@ typename Msg::ConstPtr waitFor(const std::string& topic, double seconds) {
 }
 
 TEST(MapServerNode, PublishesTheLatchedMapOfTheFile) {
-  test::TempDir dir;
+  wheelchair_core::test::TempDir dir;
   // 4 x 3 image, top row first: occupied border on the top row, one unknown pixel.
-  test::writePgm(dir.file("tiny.pgm"), 4, 3, {0, 0, 0, 0, 254, 205, 254, 254, 254, 254, 254, 0});
-  test::writeText(dir.file("tiny.yaml"), test::mapYaml("tiny.pgm", "0.1", "[-1.0, 2.0, 0.0]"));
+  wheelchair_core::test::writePgm(dir.file("tiny.pgm"), 4, 3,
+                                  {0, 0, 0, 0, 254, 205, 254, 254, 254, 254, 254, 0});
+  wheelchair_core::test::writeText(
+      dir.file("tiny.yaml"), wheelchair_core::test::mapYaml("tiny.pgm", "0.1", "[-1.0, 2.0, 0.0]"));
   test::ChildProcess server({"rosrun", "wheelchair_mapping", "map_server", dir.file("tiny.yaml")});
   // Subscribe only after the server is up: a latched topic must still deliver the map.
   ros::WallDuration(1.0).sleep();
@@ -53,7 +55,7 @@ TEST(MapServerNode, PublishesTheLatchedMapOfTheFile) {
 // With the file given as ~map_file instead of an argument, a bad file still ends the process
 // with one fatal line and exit code 1.
 TEST(MapServerNode, BadMapFileParameterExitsWithOneFatalLine) {
-  test::TempDir dir;
+  wheelchair_core::test::TempDir dir;
   const std::string missing = dir.file("missing.yaml");
   FILE* pipe =
       popen(("rosrun wheelchair_mapping map_server __name:=bad_map_server _map_file:=" + missing +

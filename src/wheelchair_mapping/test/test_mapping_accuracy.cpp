@@ -3,8 +3,8 @@
 // threshold and walls are at most 2 cells thick; no occupied cell lies farther off a wall than
 // the range noise can put a return (ceil(5 sigma / res) cells), which a heading error breaks.
 #include <gtest/gtest.h>
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_mapping/bayes_mapper.h>
-#include <wheelchair_mapping/map_io.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -21,12 +21,12 @@ using test::compare;
 
 Accuracy buildAndCompare(double noise_std, double heading_error = 0.0) {
   mrpt::random::getRandomGenerator().randomize(1234);
-  const OccupancyMap truth = test::syntheticRoom();
+  const wheelchair_core::OccupancyMap truth = test::syntheticRoom();
   const auto truth_grid = toMrptGrid(truth);
   BayesMapper mapper(MapperConfig{});
   double stamp = 0;
-  for (const Pose2D& pose : test::loopTrajectory()) {
-    const Pose2D believed{pose.x, pose.y, pose.yaw + heading_error};
+  for (const wheelchair_core::Pose2D& pose : test::loopTrajectory()) {
+    const wheelchair_core::Pose2D believed{pose.x, pose.y, pose.yaw + heading_error};
     const auto r =
         mapper.insert(test::simulateScan(truth_grid, pose, stamp += 0.2, noise_std), believed);
     EXPECT_TRUE(r.inserted) << r.reason;
@@ -35,8 +35,8 @@ Accuracy buildAndCompare(double noise_std, double heading_error = 0.0) {
   half.occupied_thresh = 0.5;
   half.free_thresh = 0.5;
   if (const char* dump = std::getenv("MAPPING_ACCURACY_DUMP")) {
-    saveMap(mapper.map(half), std::string(dump) + "_built.yaml");
-    saveMap(truth, std::string(dump) + "_truth.yaml");
+    wheelchair_core::saveMap(mapper.map(half), std::string(dump) + "_built.yaml");
+    wheelchair_core::saveMap(truth, std::string(dump) + "_truth.yaml");
   }
   return compare(mapper.map(half), truth);
 }

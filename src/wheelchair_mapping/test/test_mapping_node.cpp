@@ -7,8 +7,8 @@
 #include <sensor_msgs/LaserScan.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/static_transform_broadcaster.h>
-#include <wheelchair_mapping/map_io.h>
-#include <wheelchair_mapping/ros_conversions.h>
+#include <wheelchair_core/map_io.h>
+#include <wheelchair_ros/conversions.h>
 
 #include <cmath>
 
@@ -32,7 +32,7 @@ sensor_msgs::LaserScan circleScan() {
   return s;
 }
 
-int8_t cellAt(const OccupancyMap& m, double x, double y) {
+int8_t cellAt(const wheelchair_core::OccupancyMap& m, double x, double y) {
   int ix, iy;
   return m.worldToCell(x, y, ix, iy) ? m.at(ix, iy) : -2;
 }
@@ -62,23 +62,25 @@ TEST(MappingNode, BuildsPublishesAndSavesTheMap) {
   }
   ASSERT_TRUE(map) << "no /map within 30 s";
   EXPECT_EQ(map->header.frame_id, "odom");
-  const OccupancyMap m = fromOccupancyGrid(*map);
+  const wheelchair_core::OccupancyMap m = wheelchair_ros::fromOccupancyGrid(*map);
   // Ahead of the laser (its yaw in odom): free, then the wall; behind it: unknown.
-  EXPECT_EQ(cellAt(m, kX + 1.5 * std::cos(kYaw), kY + 1.5 * std::sin(kYaw)), kFree);
+  EXPECT_EQ(cellAt(m, kX + 1.5 * std::cos(kYaw), kY + 1.5 * std::sin(kYaw)),
+            wheelchair_core::kFree);
   EXPECT_EQ(cellAt(m, kX + (kWall + 0.01) * std::cos(kYaw), kY + (kWall + 0.01) * std::sin(kYaw)),
-            kOccupied);
-  EXPECT_EQ(cellAt(m, kX - 1.5 * std::cos(kYaw), kY - 1.5 * std::sin(kYaw)), kUnknown);
+            wheelchair_core::kOccupied);
+  EXPECT_EQ(cellAt(m, kX - 1.5 * std::cos(kYaw), kY - 1.5 * std::sin(kYaw)),
+            wheelchair_core::kUnknown);
 
-  test::TempDir dir;
+  wheelchair_core::test::TempDir dir;
   ros::param::set("/mapping/save_path", dir.file("saved.yaml"));
   std_srvs::Trigger save;
   ASSERT_TRUE(ros::service::waitForService("/mapping/save_map", ros::Duration(10.0)));
   ASSERT_TRUE(ros::service::call("/mapping/save_map", save));
   EXPECT_TRUE(save.response.success) << save.response.message;
-  const OccupancyMap saved = loadMap(dir.file("saved.yaml"));
+  const wheelchair_core::OccupancyMap saved = wheelchair_core::loadMap(dir.file("saved.yaml"));
   EXPECT_EQ(
       cellAt(saved, kX + (kWall + 0.01) * std::cos(kYaw), kY + (kWall + 0.01) * std::sin(kYaw)),
-      kOccupied);
+      wheelchair_core::kOccupied);
 }
 
 }  // namespace

@@ -8,27 +8,27 @@
 namespace wheelchair_mapping {
 namespace {
 
-OccupancyMap roomWithWallAt(double wall_x) {
-  OccupancyMap map;
+wheelchair_core::OccupancyMap roomWithWallAt(double wall_x) {
+  wheelchair_core::OccupancyMap map;
   map.resolution = 0.05;
   map.origin_x = -2.013;  // deliberately not a multiple of the resolution
   map.origin_y = -1.987;
   map.width = 120;
   map.height = 80;
-  map.data.assign(static_cast<size_t>(map.width) * map.height, kFree);
+  map.data.assign(static_cast<size_t>(map.width) * map.height, wheelchair_core::kFree);
   for (int iy = 0; iy < map.height; ++iy) {
     for (int ix = 0; ix < map.width; ++ix) {
       double x, y;
       map.cellToWorld(ix, iy, x, y);
-      if (std::abs(x - wall_x) < map.resolution / 2) map.at(ix, iy) = kOccupied;
+      if (std::abs(x - wall_x) < map.resolution / 2) map.at(ix, iy) = wheelchair_core::kOccupied;
     }
   }
-  map.at(0, 0) = kUnknown;
+  map.at(0, 0) = wheelchair_core::kUnknown;
   return map;
 }
 
 TEST(MrptConversions, KeepsGeometryAndCellsExactly) {
-  const OccupancyMap map = roomWithWallAt(1.5);
+  const wheelchair_core::OccupancyMap map = roomWithWallAt(1.5);
   const auto grid = toMrptGrid(map);
   EXPECT_EQ(grid.getSizeX(), 120u);
   EXPECT_EQ(grid.getSizeY(), 80u);
@@ -50,7 +50,7 @@ TEST(MrptConversions, KeepsGeometryAndCellsExactly) {
   EXPECT_LT(grid.getCell(wall_ix, wall_iy), 0.01f);
   EXPECT_GT(grid.getCell(5, 40), 0.99f);
   EXPECT_EQ(grid.getCell(0, 0), 0.5f);
-  const OccupancyMap back = fromMrptGrid(grid);
+  const wheelchair_core::OccupancyMap back = fromMrptGrid(grid);
   EXPECT_EQ(back.width, map.width);
   EXPECT_EQ(back.height, map.height);
   EXPECT_NEAR(back.origin_x, map.origin_x, 1e-6);
@@ -71,18 +71,19 @@ TEST(MrptConversions, SimulatedLaserSeesTheWallWhereTheMapHasIt) {
 }
 
 TEST(MrptConversions, GradedValuesAndThresholds) {
-  OccupancyMap map;
+  wheelchair_core::OccupancyMap map;
   map.width = 4;
   map.height = 1;
-  map.data = {10, 40, 80, kUnknown};
+  map.data = {10, 40, 80, wheelchair_core::kUnknown};
   const auto grid = toMrptGrid(map);
   GridThresholds graded;
   graded.trinary = false;
-  const OccupancyMap back = fromMrptGrid(grid, graded);
+  const wheelchair_core::OccupancyMap back = fromMrptGrid(grid, graded);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(back.data[i], map.data[i], 1) << i;
-  EXPECT_EQ(back.data[3], kUnknown);
-  const OccupancyMap tri = fromMrptGrid(grid);  // 0.196 / 0.65
-  EXPECT_EQ(tri.data, (std::vector<int8_t>{kFree, kUnknown, kOccupied, kUnknown}));
+  EXPECT_EQ(back.data[3], wheelchair_core::kUnknown);
+  const wheelchair_core::OccupancyMap tri = fromMrptGrid(grid);  // 0.196 / 0.65
+  EXPECT_EQ(tri.data, (std::vector<int8_t>{wheelchair_core::kFree, wheelchair_core::kUnknown,
+                                           wheelchair_core::kOccupied, wheelchair_core::kUnknown}));
   map.origin_yaw = 0.1;
   EXPECT_THROW(toMrptGrid(map), std::invalid_argument);
 }

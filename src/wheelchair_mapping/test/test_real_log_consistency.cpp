@@ -30,7 +30,7 @@ TEST(RealLogConsistency, IntelCorrectedHeldOutScans) {
   }
   EXPECT_EQ(reader.corruptLines(), 0u);
   EXPECT_GT(mapper.scansInserted(), 800u);
-  const OccupancyMap map = mapper.map();
+  const wheelchair_core::OccupancyMap map = mapper.map();
   EndpointConsistency c;
   for (const auto& s : held) addEndpoints(map, s.scan, s.laser_pose, 20.0, c);
   std::cout << "intel: " << 100 * c.onFraction() << " % of " << c.endpoints

@@ -26,10 +26,10 @@
 #include <tf2/utils.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_mapping/bayes_mapper.h>
-#include <wheelchair_mapping/map_io.h>
-#include <wheelchair_mapping/ros_conversions.h>
 #include <wheelchair_msgs/WheelTorques.h>
+#include <wheelchair_ros/conversions.h>
 
 #include <algorithm>
 #include <cmath>
@@ -75,7 +75,7 @@ struct Command {
   bool reached = false;
 };
 
-Command followSegment(const Pose2D& p, const Waypoint& a, const Waypoint& b) {
+Command followSegment(const wheelchair_core::Pose2D& p, const Waypoint& a, const Waypoint& b) {
   const double len = std::hypot(b.x - a.x, b.y - a.y);
   const double ux = (b.x - a.x) / len, uy = (b.y - a.y) / len;
   const double along = (p.x - a.x) * ux + (p.y - a.y) * uy;
@@ -109,12 +109,15 @@ class SimDrive {
   }
   bool collided() const { return collided_; }
   /// Scans received over /scan, each with the ground-truth base_link pose at its stamp.
-  const std::vector<std::pair<LaserScan2D, Pose2D>>& scans() const { return scans_; }
+  const std::vector<std::pair<wheelchair_core::LaserScan2D, wheelchair_core::Pose2D>>& scans()
+      const {
+    return scans_;
+  }
 
  private:
   void onTruth(const nav_msgs::Odometry::ConstPtr& m) {
-    const Pose2D p{m->pose.pose.position.x, m->pose.pose.position.y,
-                   tf2::getYaw(m->pose.pose.orientation)};
+    const wheelchair_core::Pose2D p{m->pose.pose.position.x, m->pose.pose.position.y,
+                                    tf2::getYaw(m->pose.pose.orientation)};
     if (first_truth_.isZero()) first_truth_ = m->header.stamp;
     truth_[m->header.stamp] = p;
     while (truth_.size() > 400) truth_.erase(truth_.begin());
@@ -139,12 +142,12 @@ class SimDrive {
         }
         return;
       }
-      scans_.emplace_back(fromLaserScanMsg(*pending_.front()), it->second);
+      scans_.emplace_back(wheelchair_ros::fromLaserScanMsg(*pending_.front()), it->second);
       pending_.erase(pending_.begin());
     }
   }
 
-  void control(const Pose2D& p, double v, double w) {
+  void control(const wheelchair_core::Pose2D& p, double v, double w) {
     Command c;
     while (segment_ < kRoute.size()) {
       const Waypoint from = segment_ == 0 ? start_ : kRoute[segment_ - 1];
@@ -175,9 +178,9 @@ class SimDrive {
   ros::NodeHandle nh_;
   ros::Publisher torques_;
   ros::Subscriber truth_sub_, scan_sub_, collision_sub_;
-  std::map<ros::Time, Pose2D> truth_;
+  std::map<ros::Time, wheelchair_core::Pose2D> truth_;
   std::vector<sensor_msgs::LaserScan::ConstPtr> pending_;
-  std::vector<std::pair<LaserScan2D, Pose2D>> scans_;
+  std::vector<std::pair<wheelchair_core::LaserScan2D, wheelchair_core::Pose2D>> scans_;
   ros::Time next_control_, first_truth_;
   Waypoint start_{0, 0};
   bool started_ = false;
@@ -186,24 +189,19 @@ class SimDrive {
   bool collided_ = false;
 };
 
-Pose2D compose(const Pose2D& a, const Pose2D& b) {
-  return {a.x + std::cos(a.yaw) * b.x - std::sin(a.yaw) * b.y,
-          a.y + std::sin(a.yaw) * b.x + std::cos(a.yaw) * b.y, a.yaw + b.yaw};
-}
-
 TEST(SimMapping, ThirtyScansAlongADriveThroughTwoRooms) {
   std::string world;
   ASSERT_TRUE(ros::param::get("~world", world)) << "~world (the simulator's map) is required";
-  const OccupancyMap truth = loadMap(world);
+  const wheelchair_core::OccupancyMap truth = wheelchair_core::loadMap(world);
 
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
   std::string error;
   ASSERT_TRUE(buffer.canTransform("base_link", "laser", ros::Time(0), ros::Duration(20.0), &error))
       << error;
-  Pose2D mount;
-  ASSERT_FALSE(
-      laserPose2D(buffer.lookupTransform("base_link", "laser", ros::Time(0)).transform, mount))
+  wheelchair_core::Pose2D mount;
+  ASSERT_FALSE(wheelchair_ros::laserPose2D(
+      buffer.lookupTransform("base_link", "laser", ros::Time(0)).transform, mount))
       << "the simulated laser is upright";
 
   SimDrive drive;
@@ -225,14 +223,14 @@ TEST(SimMapping, ThirtyScansAlongADriveThroughTwoRooms) {
     const auto& [scan, pose] = all[k * (all.size() - 1) / (kScans - 1)];
     EXPECT_EQ(scan.ranges.size(), static_cast<size_t>(kBeams));
     EXPECT_NEAR(scan.angle_max - scan.angle_min, M_PI, 1e-6);
-    const InsertResult r = mapper.insert(scan, compose(pose, mount));
+    const InsertResult r = mapper.insert(scan, wheelchair_core::compose(pose, mount));
     EXPECT_TRUE(r.inserted) << r.reason;
   }
   GridThresholds half;  // the paper's classification: occupied iff P > 0.5
   half.occupied_thresh = 0.5;
   half.free_thresh = 0.5;
-  const OccupancyMap built = mapper.map(half);
-  if (std::string dump; ros::param::get("~dump", dump)) saveMap(built, dump);
+  const wheelchair_core::OccupancyMap built = mapper.map(half);
+  if (std::string dump; ros::param::get("~dump", dump)) wheelchair_core::saveMap(built, dump);
   const test::Accuracy a = test::compare(built, truth);
   double sigma = 0.0;  // the simulator's range noise, set in sim_mapping.test
   ASSERT_TRUE(ros::param::get("/simulator/laser_range_noise", sigma));

@@ -1,5 +1,5 @@
-#include <wheelchair_common/nodelet_main.h>
+#include <wheelchair_ros/nodelet_main.h>
 
 int main(int argc, char** argv) {
-  return wheelchair_common::runNodeletMain(argc, argv, "safety", "wheelchair_safety/SafetyNodelet");
+  return wheelchair_ros::runNodeletMain(argc, argv, "safety", "wheelchair_safety/SafetyNodelet");
 }

@@ -1,7 +1,7 @@
 // ROS layer of the safety supervisor: feeds it the localizer's estimate and status, tf
 // map -> base_link, the laser (returns projected into the map), the map, the plan, the base
 // driver's status and the rider's commands; publishes a latched stop flag and its reason.
-#include <wheelchair_mapping/ros_conversions.h>
+#include <wheelchair_ros/conversions.h>
 #include <wheelchair_safety/safety_supervisor.h>
 
 #include <diagnostic_msgs/DiagnosticStatus.h>
@@ -17,7 +17,7 @@
 #include <std_msgs/String.h>
 #include <tf2/utils.h>
 #include <tf2_ros/buffer.h>
-#include <wheelchair_common/shared_tf.h>
+#include <wheelchair_ros/shared_tf.h>
 #include <pluginlib/class_list_macros.hpp>
 
 #include <cmath>
@@ -44,7 +44,7 @@ class SafetyNodelet : public nodelet::Nodelet {
     pnh.param<std::string>("map_frame", map_frame_, "map");
     pnh.param<std::string>("base_frame", base_frame_, "base_link");
     supervisor_ = std::make_unique<SafetySupervisor>(limits);
-    tf_buffer_ = wheelchair_common::sharedTfBuffer();  // one /tf listener per process
+    tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
 
     stop_pub_ = nh.advertise<std_msgs::Bool>("safety/stop", 1, true);
     status_pub_ = nh.advertise<std_msgs::String>("safety/status", 1, true);
@@ -63,7 +63,7 @@ class SafetyNodelet : public nodelet::Nodelet {
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onMap(wheelchair_mapping::fromOccupancyGrid(*msg));
+    supervisor_->onMap(wheelchair_ros::fromOccupancyGrid(*msg));
   }
 
   void onPlan(const nav_msgs::Path::ConstPtr& msg) {

@@ -55,7 +55,7 @@ const char* describe(StopReason reason) {
 
 SafetySupervisor::SafetySupervisor(SafetyLimits limits) : limits_(limits) {}
 
-void SafetySupervisor::onMap(const wheelchair_mapping::OccupancyMap& map) { map_ = map; }
+void SafetySupervisor::onMap(const wheelchair_core::OccupancyMap& map) { map_ = map; }
 
 void SafetySupervisor::onPath(std::vector<Eigen::Vector2d> path) { path_ = std::move(path); }
 

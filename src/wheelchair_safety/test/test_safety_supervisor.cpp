@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 using namespace wheelchair_safety;
-using wheelchair_mapping::OccupancyMap;
+using wheelchair_core::OccupancyMap;
 
 namespace {
 
@@ -13,8 +13,8 @@ OccupancyMap corridorMap() {
   OccupancyMap map;
   map.width = 200;
   map.height = 80;
-  map.data.assign(map.width * map.height, wheelchair_mapping::kFree);
-  for (int y = 0; y < map.height; ++y) map.at(180, y) = wheelchair_mapping::kOccupied;
+  map.data.assign(map.width * map.height, wheelchair_core::kFree);
+  for (int y = 0; y < map.height; ++y) map.at(180, y) = wheelchair_core::kOccupied;
   return map;
 }
 

@@ -1,4 +1,4 @@
-#include <wheelchair_mapping/map_io.h>
+#include <wheelchair_core/map_io.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 #include <wheelchair_sim/world_loader.h>
 
@@ -6,7 +6,7 @@ namespace wheelchair_sim {
 
 std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> loadWorld(const std::string& yaml_path) {
   return std::make_shared<const mrpt::maps::COccupancyGridMap2D>(
-      wheelchair_mapping::toMrptGrid(wheelchair_mapping::loadMap(yaml_path)));
+      wheelchair_mapping::toMrptGrid(wheelchair_core::loadMap(yaml_path)));
 }
 
 }  // namespace wheelchair_sim

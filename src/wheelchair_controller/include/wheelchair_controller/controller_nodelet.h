@@ -15,7 +15,7 @@
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
-#include <wheelchair_common/shared_tf.h>
+#include <wheelchair_ros/shared_tf.h>
 
 #include <actionlib_msgs/GoalStatus.h>
 #include <std_msgs/Bool.h>

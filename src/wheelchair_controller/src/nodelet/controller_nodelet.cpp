@@ -74,7 +74,7 @@ void ControllerNodelet::onInit() {
   base_frame_ = pnh.param<std::string>("base_frame", "base_link");
   const double rate = pnh.param("rate", 50.0);
 
-  tf_buffer_ = wheelchair_common::sharedTfBuffer();  // one /tf listener per process
+  tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
   torque_pub_ = nh.advertise<wheelchair_msgs::WheelTorques>("wheel_torques", 10);
   reference_pub_ = pnh.advertise<geometry_msgs::PointStamped>("reference", 10);
   error_pub_ = pnh.advertise<geometry_msgs::Vector3Stamped>("tracking_error", 10);

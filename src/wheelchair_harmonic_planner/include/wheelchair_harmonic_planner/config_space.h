@@ -3,7 +3,7 @@
 // potential where the free space allows (see README, "Configuration space").
 #pragma once
 
-#include <wheelchair_mapping/occupancy_map.h>
+#include <wheelchair_core/occupancy_map.h>
 
 #include <cstdint>
 #include <string>
@@ -27,7 +27,7 @@ class ConfigSpace {
  public:
   /// Builds the C-space. Cells outside the map count as obstacles (the border row/column of the
   /// grid is always blocked so that every path stays inside the map).
-  ConfigSpace(const wheelchair_mapping::OccupancyMap& map, const ConfigSpaceParams& params);
+  ConfigSpace(const wheelchair_core::OccupancyMap& map, const ConfigSpaceParams& params);
 
   int width() const { return width_; }
   int height() const { return height_; }

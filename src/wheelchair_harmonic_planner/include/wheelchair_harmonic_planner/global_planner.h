@@ -2,8 +2,8 @@
 // Debian). ROS-free: parameters arrive as strings, the map as an OccupancyMap.
 #pragma once
 
+#include <wheelchair_core/occupancy_map.h>
 #include <wheelchair_harmonic_planner/plan_types.h>
-#include <wheelchair_mapping/occupancy_map.h>
 
 #include <chrono>
 #include <map>
@@ -27,7 +27,7 @@ class GlobalPlanner {
 
   /// Called once after construction (pluginlib needs a default constructor), and again with a
   /// new map whenever the map changes. Throws std::invalid_argument on bad parameters.
-  virtual void initialize(const std::string& name, const wheelchair_mapping::OccupancyMap& map,
+  virtual void initialize(const std::string& name, const wheelchair_core::OccupancyMap& map,
                           const ParameterMap& params) = 0;
 
   /// Plans from start to goal (map frame). On success `plan` runs from start to goal with
@@ -39,7 +39,7 @@ class GlobalPlanner {
   /// The potential field of the last plan as a grid on the map's cells, scaled 0 (goal) to 100
   /// (highest potential), -1 where undefined (obstacles, not connected), for rviz. False if the
   /// planner has none (sampling planners) or has not planned yet.
-  virtual bool potentialGrid(wheelchair_mapping::OccupancyMap& /*grid*/) const { return false; }
+  virtual bool potentialGrid(wheelchair_core::OccupancyMap& /*grid*/) const { return false; }
 
  protected:
   GlobalPlanner() = default;

@@ -23,12 +23,12 @@ ConfigSpaceParams configSpaceParams(const ParameterMap& params);
 /// and its earlier field is first checked on the new map (warm start, often no factorization).
 class HarmonicPlanner : public GlobalPlanner {
  public:
-  void initialize(const std::string& name, const wheelchair_mapping::OccupancyMap& map,
+  void initialize(const std::string& name, const wheelchair_core::OccupancyMap& map,
                   const ParameterMap& params) override;
   bool makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
                 Certificate& certificate) override;
   /// 100 * log u / (lowest finite log u): 0 at the goal, 100 at the farthest connected cell.
-  bool potentialGrid(wheelchair_mapping::OccupancyMap& grid) const override;
+  bool potentialGrid(wheelchair_core::OccupancyMap& grid) const override;
 
   /// The last solved potential (log u), e.g. for publishing; null before the first plan.
   const HarmonicSolution* solution() const { return solution_ ? &*solution_ : nullptr; }
@@ -41,8 +41,8 @@ class HarmonicPlanner : public GlobalPlanner {
   std::string name_;
   std::unique_ptr<ConfigSpace> cspace_;
   FootprintPlanningParams footprint_params_;
-  std::unique_ptr<FootprintChecker> checker_;      ///< on cspace_
-  wheelchair_mapping::OccupancyMap map_geometry_;  ///< the map without its cells
+  std::unique_ptr<FootprintChecker> checker_;   ///< on cspace_
+  wheelchair_core::OccupancyMap map_geometry_;  ///< the map without its cells
   HarmonicSolverParams solver_params_;
   DescentParams descent_params_;
   std::optional<HarmonicSolution> solution_;  ///< kept as warm start for the same goal cell

@@ -1,7 +1,7 @@
 // Generated grids for tests and the benchmark: seeded perfect mazes and straight corridors.
 #pragma once
 
-#include <wheelchair_mapping/occupancy_map.h>
+#include <wheelchair_core/occupancy_map.h>
 
 #include <cstdint>
 
@@ -11,8 +11,8 @@ namespace wheelchair_harmonic_planner {
 /// `corridor_cells` wide between walls `wall_cells` thick, closed by an outer wall. Passage
 /// (i, j) of the maze has its lower-left free cell at (wall + i * pitch, wall + j * pitch) with
 /// pitch = corridor + wall.
-wheelchair_mapping::OccupancyMap makeMaze(int size, int corridor_cells, int wall_cells,
-                                          uint32_t seed, double resolution = 0.05);
+wheelchair_core::OccupancyMap makeMaze(int size, int corridor_cells, int wall_cells, uint32_t seed,
+                                       double resolution = 0.05);
 
 /// Centre of maze passage (i, j) in world coordinates.
 void mazePassageCentre(int i, int j, int corridor_cells, int wall_cells, double resolution,
@@ -20,7 +20,7 @@ void mazePassageCentre(int i, int j, int corridor_cells, int wall_cells, double 
 
 /// A straight corridor along x: `length` by `width` metres of free space inside a wall of
 /// `wall_cells` on every side; origin at the lower-left corner of the grid.
-wheelchair_mapping::OccupancyMap makeCorridor(double length, double width, double resolution,
-                                              int wall_cells = 2);
+wheelchair_core::OccupancyMap makeCorridor(double length, double width, double resolution,
+                                           int wall_cells = 2);
 
 }  // namespace wheelchair_harmonic_planner

@@ -16,7 +16,7 @@ class OmplPlanner : public GlobalPlanner {
   /// Parameters: algorithm (RRTConnect | RRTstar | PRMstar | BITstar), time_limit [s],
   /// simplify (bool), seed (> 0: OMPL's global seed; effective only before the process's first
   /// OMPL plan), plus the C-space parameters of configSpaceParams().
-  void initialize(const std::string& name, const wheelchair_mapping::OccupancyMap& map,
+  void initialize(const std::string& name, const wheelchair_core::OccupancyMap& map,
                   const ParameterMap& params) override;
   bool makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
                 Certificate& certificate) override;

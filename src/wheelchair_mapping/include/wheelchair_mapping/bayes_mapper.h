@@ -4,10 +4,10 @@
 #pragma once
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <wheelchair_core/laser_scan.h>
+#include <wheelchair_core/occupancy_map.h>
 #include <wheelchair_mapping/inverse_sensor_model.h>
-#include <wheelchair_mapping/laser_scan.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
-#include <wheelchair_mapping/occupancy_map.h>
 
 #include <cstddef>
 #include <string>
@@ -37,10 +37,11 @@ class BayesMapper {
   /// Fuses one scan taken at `sensor_pose` (map frame). Skips the whole scan, saying why, when
   /// the pose is not finite, the geometry or beam count is wrong, the stamp is older than the
   /// last inserted scan's, or no beam is usable.
-  InsertResult insert(const LaserScan2D& scan, const Pose2D& sensor_pose);
+  InsertResult insert(const wheelchair_core::LaserScan2D& scan,
+                      const wheelchair_core::Pose2D& sensor_pose);
 
   const mrpt::maps::COccupancyGridMap2D& grid() const { return grid_; }
-  OccupancyMap map(const GridThresholds& thresholds = GridThresholds()) const;
+  wheelchair_core::OccupancyMap map(const GridThresholds& thresholds = GridThresholds()) const;
   size_t scansInserted() const { return scans_inserted_; }
 
   /// The P_s^o actually applied after MRPT's 8-bit log-odds quantization.
@@ -51,7 +52,7 @@ class BayesMapper {
   void growToFit(double x_min, double x_max, double y_min, double y_max);
   void markFree(int ix, int iy);
   void markOccupied(int ix, int iy);
-  void markFootprint(const Pose2D& pose, double angle, double range);
+  void markFootprint(const wheelchair_core::Pose2D& pose, double angle, double range);
 
   MapperConfig config_;
   mrpt::maps::COccupancyGridMap2D grid_;

@@ -2,7 +2,7 @@
 // gzip-compressed. Other messages (ODOM, PARAM, comments, ...) are ignored.
 #pragma once
 
-#include <wheelchair_mapping/laser_scan.h>
+#include <wheelchair_core/laser_scan.h>
 
 #include <cstddef>
 #include <memory>
@@ -20,9 +20,9 @@ struct CarmenOptions {
 };
 
 struct LogScan {
-  LaserScan2D scan;
-  Pose2D laser_pose;  ///< pose of the laser in the log's world frame
-  size_t line = 0;    ///< 1-based line number in the log
+  wheelchair_core::LaserScan2D scan;
+  wheelchair_core::Pose2D laser_pose;  ///< pose of the laser in the log's world frame
+  size_t line = 0;                     ///< 1-based line number in the log
 };
 
 /// Parses one log line. Returns a scan for a valid FLASER / ROBOTLASER1 line; nothing for any

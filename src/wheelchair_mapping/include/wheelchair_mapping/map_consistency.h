@@ -2,8 +2,8 @@
 // build the map) that fall on occupied cells.
 #pragma once
 
-#include <wheelchair_mapping/laser_scan.h>
-#include <wheelchair_mapping/occupancy_map.h>
+#include <wheelchair_core/laser_scan.h>
+#include <wheelchair_core/occupancy_map.h>
 
 #include <cstddef>
 
@@ -18,7 +18,9 @@ struct EndpointConsistency {
 };
 
 /// Adds the endpoints of `scan` taken at `sensor_pose` to `tally`.
-void addEndpoints(const OccupancyMap& map, const LaserScan2D& scan, const Pose2D& sensor_pose,
-                  double max_range, EndpointConsistency& tally);
+void addEndpoints(const wheelchair_core::OccupancyMap& map,
+                  const wheelchair_core::LaserScan2D& scan,
+                  const wheelchair_core::Pose2D& sensor_pose, double max_range,
+                  EndpointConsistency& tally);
 
 }  // namespace wheelchair_mapping

@@ -1,10 +1,11 @@
-// OccupancyMap <-> mrpt::maps::COccupancyGridMap2D (the grid the localizer, the simulator and
-// the mapper work on). MRPT cells hold the probability of being FREE; OccupancyMap holds the
-// occupancy in percent (nav_msgs), so p_free = 1 - value / 100 and unknown = 0.5.
+// wheelchair_core::OccupancyMap <-> mrpt::maps::COccupancyGridMap2D (the grid the localizer, the
+// simulator and the mapper work on). MRPT cells hold the probability of being FREE;
+// wheelchair_core::OccupancyMap holds the occupancy in percent (nav_msgs), so p_free = 1 - value /
+// 100 and unknown = 0.5.
 #pragma once
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
-#include <wheelchair_mapping/occupancy_map.h>
+#include <wheelchair_core/occupancy_map.h>
 
 namespace wheelchair_mapping {
 
@@ -19,9 +20,9 @@ struct GridThresholds {
 
 /// Same extent, resolution and origin (origin_yaw must be 0); throws std::invalid_argument
 /// for an empty or inconsistent map.
-mrpt::maps::COccupancyGridMap2D toMrptGrid(const OccupancyMap& map);
+mrpt::maps::COccupancyGridMap2D toMrptGrid(const wheelchair_core::OccupancyMap& map);
 
-OccupancyMap fromMrptGrid(const mrpt::maps::COccupancyGridMap2D& grid,
-                          const GridThresholds& thresholds = GridThresholds());
+wheelchair_core::OccupancyMap fromMrptGrid(const mrpt::maps::COccupancyGridMap2D& grid,
+                                           const GridThresholds& thresholds = GridThresholds());
 
 }  // namespace wheelchair_mapping

@@ -4,7 +4,7 @@
 // from the rider. ROS-free; time is injected (seconds, any epoch).
 #pragma once
 
-#include <wheelchair_mapping/occupancy_map.h>
+#include <wheelchair_core/occupancy_map.h>
 
 #include <Eigen/Core>
 
@@ -54,7 +54,7 @@ class SafetySupervisor {
  public:
   explicit SafetySupervisor(SafetyLimits limits = SafetyLimits());
 
-  void onMap(const wheelchair_mapping::OccupancyMap& map);
+  void onMap(const wheelchair_core::OccupancyMap& map);
   /// The path being driven, in the map frame (empty: nothing ahead to watch).
   void onPath(std::vector<Eigen::Vector2d> path);
   /// Localizer status: `localized` and the pose covariance (x, y, theta) in the map frame.
@@ -84,7 +84,7 @@ class SafetySupervisor {
   bool inCorridorAhead(const Eigen::Vector2d& point) const;
 
   SafetyLimits limits_;
-  wheelchair_mapping::OccupancyMap map_;
+  wheelchair_core::OccupancyMap map_;
   std::vector<Eigen::Vector2d> path_;
   double scan_stamp_ = -1.0, pose_stamp_ = -1.0, localization_stamp_ = -1.0;
   bool localized_ = false;

@@ -8,8 +8,8 @@
 
 namespace wheelchair_sim {
 
-/// Loads `yaml_path` with wheelchair_mapping::loadMap and converts it with toMrptGrid.
-/// Throws wheelchair_mapping::MapFileError / std::invalid_argument naming the problem.
+/// Loads `yaml_path` with wheelchair_core::loadMap and converts it with toMrptGrid.
+/// Throws wheelchair_core::MapFileError / std::invalid_argument naming the problem.
 std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> loadWorld(const std::string& yaml_path);
 
 }  // namespace wheelchair_sim

@@ -1,0 +1,122 @@
+#include <gtest/gtest.h>
+#include <wheelchair_ros/conversions.h>
+
+#include <cmath>
+
+namespace wheelchair_ros {
+namespace {
+
+using wheelchair_core::LaserScan2D;
+using wheelchair_core::OccupancyMap;
+using wheelchair_core::Pose2D;
+
+TEST(RosConversions, RoundTripKeepsEverything) {
+  OccupancyMap map;
+  map.resolution = 0.1;
+  map.origin_x = 1.25;
+  map.origin_y = -4.5;
+  map.origin_yaw = 0.3;
+  map.width = 3;
+  map.height = 2;
+  map.data = {0, 100, -1, 50, 0, 0};
+  const auto msg = toOccupancyGrid(map, "map", ros::Time(12.5));
+  EXPECT_EQ(msg.header.frame_id, "map");
+  EXPECT_EQ(msg.info.width, 3u);
+  EXPECT_EQ(msg.info.height, 2u);
+  EXPECT_NEAR(msg.info.origin.orientation.z, std::sin(0.15), 1e-12);
+  EXPECT_EQ(msg.data[1], 100);  // row-major, row 0 at the bottom in both
+  const OccupancyMap back = fromOccupancyGrid(msg);
+  EXPECT_NEAR(back.resolution, 0.1, 1e-7);
+  EXPECT_EQ(back.origin_x, 1.25);
+  EXPECT_EQ(back.origin_y, -4.5);
+  EXPECT_NEAR(back.origin_yaw, 0.3, 1e-12);
+  EXPECT_EQ(back.data, map.data);
+}
+
+TEST(RosConversions, RejectsInconsistentMessages) {
+  nav_msgs::OccupancyGrid msg;
+  msg.info.width = 2;
+  msg.info.height = 2;
+  msg.info.resolution = 0.05f;
+  msg.data.resize(3);
+  EXPECT_THROW(fromOccupancyGrid(msg), std::invalid_argument);
+  msg.data.resize(4);
+  msg.info.resolution = 0.0f;
+  EXPECT_THROW(fromOccupancyGrid(msg), std::invalid_argument);
+  msg.info.resolution = -0.05f;
+  EXPECT_THROW(fromOccupancyGrid(msg), std::invalid_argument);
+  msg.info.resolution = 0.05f;
+  msg.info.origin.position.x = NAN;
+  EXPECT_THROW(fromOccupancyGrid(msg), std::invalid_argument);
+}
+
+TEST(RosConversions, ADefaultConstructedOriginIsNoRotation) {
+  nav_msgs::OccupancyGrid msg;
+  msg.info.width = msg.info.height = 1;
+  msg.info.resolution = 0.05f;
+  msg.data.resize(1);
+  EXPECT_EQ(fromOccupancyGrid(msg).origin_yaw, 0.0);
+}
+
+TEST(RosConversions, YawRoundTripsThroughTheQuaternion) {
+  for (double yaw = -3.1; yaw < 3.1; yaw += 0.37) {
+    const geometry_msgs::Quaternion q = yawToQuaternion(yaw);
+    EXPECT_TRUE(isNormalized(q));
+    EXPECT_NEAR(yawOf(q), yaw, 1e-12);
+  }
+  geometry_msgs::Quaternion bad;
+  bad.w = 2.0;
+  EXPECT_FALSE(isNormalized(bad));
+}
+
+TEST(RosConversions, PosesAndPathsRoundTrip) {
+  const std::vector<Pose2D> poses = {{1, 2, 0.5}, {3, -4, -2.0}};
+  const nav_msgs::Path path = toPathMsg(poses, "map", ros::Time(3.0));
+  ASSERT_EQ(path.poses.size(), 2u);
+  EXPECT_EQ(path.poses[1].header.frame_id, "map");
+  const auto back = fromPathMsg(path);
+  EXPECT_NEAR(back[1].x, 3.0, 1e-12);
+  EXPECT_NEAR(back[1].yaw, -2.0, 1e-12);
+  const Pose2D t = toPose2D(toTransformMsg({0.5, 0.25, 1.0}));
+  EXPECT_NEAR(t.yaw, 1.0, 1e-12);
+}
+
+TEST(RosConversions, PlanarCovarianceIsTheXYYawBlock) {
+  Eigen::Matrix3d c;
+  c << 1, 2, 3, 2, 5, 6, 3, 6, 9;
+  const auto ros_cov = toRosCovariance(c);
+  EXPECT_EQ(ros_cov[0], 1);
+  EXPECT_EQ(ros_cov[5], 3);   // x-yaw
+  EXPECT_EQ(ros_cov[35], 9);  // yaw-yaw
+  EXPECT_EQ(ros_cov[14], 0);  // z-z
+  EXPECT_EQ(planarCovariance(ros_cov), c);
+}
+
+TEST(RosConversions, AnUpsideDownLaserIsRecognized) {
+  geometry_msgs::Transform t;
+  t.rotation.x = 1.0;  // 180 deg about x: z points down
+  t.rotation.w = 0.0;
+  Pose2D pose;
+  EXPECT_TRUE(laserPose2D(t, pose));
+  t.rotation = yawToQuaternion(0.7);
+  EXPECT_FALSE(laserPose2D(t, pose));
+  EXPECT_NEAR(pose.yaw, 0.7, 1e-12);
+}
+
+TEST(RosConversions, LaserScanRoundTrips) {
+  LaserScan2D s;
+  s.stamp = 4.5;
+  s.angle_min = -1.0;
+  s.angle_max = 1.0;
+  s.angle_increment = 1.0;
+  s.range_min = 0.1;
+  s.range_max = 8.0;
+  s.ranges = {1.0f, INFINITY, 2.0f};
+  const LaserScan2D back = fromLaserScanMsg(toLaserScanMsg(s, "laser"));
+  EXPECT_DOUBLE_EQ(back.stamp, 4.5);
+  EXPECT_EQ(back.ranges, s.ranges);
+  EXPECT_FLOAT_EQ(back.range_max, 8.0f);
+}
+
+}  // namespace
+}  // namespace wheelchair_ros
