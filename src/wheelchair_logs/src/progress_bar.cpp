@@ -1,10 +1,10 @@
 #include <unistd.h>
-#include <wheelchair_mapping/progress_bar.h>
+#include <wheelchair_logs/progress_bar.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace wheelchair_mapping {
+namespace wheelchair_logs {
 
 ProgressBar::ProgressBar(std::FILE* stream, std::string label, bool enabled)
     : stream_(stream), label_(std::move(label)), enabled_(enabled && isatty(fileno(stream))) {}
@@ -28,4 +28,4 @@ void ProgressBar::breakLine() {
   last_percent_ = -1;
 }
 
-}  // namespace wheelchair_mapping
+}  // namespace wheelchair_logs

@@ -1,4 +1,4 @@
-#include <wheelchair_mapping/carmen_log.h>
+#include <wheelchair_logs/carmen_log.h>
 #include <zlib.h>
 
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace wheelchair_mapping {
+namespace wheelchair_logs {
 namespace {
 
 bool toDouble(const std::string& token, double& value) {
@@ -44,10 +44,6 @@ void fillRanges(const std::vector<double>& readings, const CarmenOptions& option
   }
 }
 
-bool finitePose(const wheelchair_core::Pose2D& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.yaw);
-}
-
 // FLASER n r1..rn x y theta odom_x odom_y odom_theta ipc_timestamp ipc_hostname logger_timestamp
 bool parseFlaser(const std::vector<std::string>& t, const CarmenOptions& options, LogScan& out,
                  std::string& error) {
@@ -71,11 +67,12 @@ bool parseFlaser(const std::vector<std::string>& t, const CarmenOptions& options
   s.angle_increment = beams % 2 == 0 ? fov / beams : fov / std::max<size_t>(beams - 1, 1);
   s.angle_min = -fov / 2;
   s.angle_max = s.angle_min + (beams - 1) * s.angle_increment;
-  s.range_min = 0.0;
+  s.range_min = options.range_min;
   s.range_max = options.range_max;
   s.stamp = tail[6];
   fillRanges(readings, options, s);
   out.laser_pose = {tail[0], tail[1], tail[2]};
+  out.odom_pose = {tail[3], tail[4], tail[5]};
   return true;
 }
 
@@ -108,11 +105,12 @@ bool parseRobotLaser(const std::vector<std::string>& t, const CarmenOptions& opt
   s.angle_min = head[1];
   s.angle_increment = head[3];
   s.angle_max = s.angle_min + (beams - 1) * s.angle_increment;
-  s.range_min = 0.0;
+  s.range_min = options.range_min;
   s.range_max = std::min(head[4], options.range_max);
   s.stamp = tail[11];
   fillRanges(readings, options, s);
   out.laser_pose = {tail[0], tail[1], tail[2]};
+  out.odom_pose = {tail[3], tail[4], tail[5]};
   return true;
 }
 
@@ -134,7 +132,7 @@ std::optional<LogScan> parseCarmenLine(const std::string& line, const CarmenOpti
   } else {
     return std::nullopt;
   }
-  if (ok && !finitePose(out.laser_pose)) {
+  if (ok && !out.laser_pose.isFinite()) {
     error = "pose is not finite";
     ok = false;
   }
@@ -211,4 +209,4 @@ bool CarmenLogReader::next(LogScan& out) {
   return false;
 }
 
-}  // namespace wheelchair_mapping
+}  // namespace wheelchair_logs

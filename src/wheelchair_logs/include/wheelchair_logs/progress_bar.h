@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-namespace wheelchair_mapping {
+namespace wheelchair_logs {
 
 class ProgressBar {
  public:
@@ -22,4 +22,4 @@ class ProgressBar {
   bool drawn_ = false;
 };
 
-}  // namespace wheelchair_mapping
+}  // namespace wheelchair_logs

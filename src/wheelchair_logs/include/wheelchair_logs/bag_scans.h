@@ -1,19 +1,15 @@
-// Laser scans with their poses from a rosbag (library wheelchair_mapping_bag): sensor_msgs/
+// Laser scans with their poses from a rosbag (library wheelchair_logs_bag): sensor_msgs/
 // LaserScan on a topic, and the laser pose in a fixed frame from the bag's /tf and /tf_static.
+// The header names no ROS type, so an offline tool includes it without ROS include paths.
 #pragma once
 
-#include <tf2/buffer_core.h>
-#include <wheelchair_mapping/carmen_log.h>
+#include <wheelchair_logs/log_scan.h>
 
+#include <cstddef>
 #include <memory>
 #include <string>
 
-namespace rosbag {
-class Bag;
-class View;
-}  // namespace rosbag
-
-namespace wheelchair_mapping {
+namespace wheelchair_logs {
 
 class BagScanReader {
  public:
@@ -41,4 +37,4 @@ class BagScanReader {
   size_t skipped_ = 0;
 };
 
-}  // namespace wheelchair_mapping
+}  // namespace wheelchair_logs

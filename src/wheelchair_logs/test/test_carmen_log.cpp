@@ -1,7 +1,7 @@
 // CARMEN log parsing: FLASER / ROBOTLASER1 fields, no-echo readings, corrupt lines with their
 // line numbers, gzip files, truncated files.
 #include <gtest/gtest.h>
-#include <wheelchair_mapping/carmen_log.h>
+#include <wheelchair_logs/carmen_log.h>
 #include <zlib.h>
 
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "map_test_files.h"
 
-namespace wheelchair_mapping {
+namespace wheelchair_logs {
 namespace {
 
 std::string flaser(int n, double r, double x, double y, double th, double ts) {
@@ -39,6 +39,25 @@ TEST(CarmenLog, FlaserFieldsAndAngles) {
   EXPECT_NEAR(odd->scan.angle_max, M_PI / 2, 1e-12);  // 361 beams: -90 .. +90 deg
 }
 
+// derived_*_gt_rawodom logs: the corrected laser pose first, the raw odometry second.
+TEST(CarmenLog, FlaserKeepsItsSecondPoseAsOdometry) {
+  std::string error;
+  const auto s =
+      parseCarmenLine("FLASER 2 1.0 2.0 1 2 0.5 -3 4 0.25 7.5 host 7.5", CarmenOptions{}, error);
+  ASSERT_TRUE(s) << error;
+  EXPECT_DOUBLE_EQ(s->laser_pose.x, 1.0);
+  EXPECT_DOUBLE_EQ(s->odom_pose.x, -3.0);
+  EXPECT_DOUBLE_EQ(s->odom_pose.y, 4.0);
+  EXPECT_DOUBLE_EQ(s->odom_pose.yaw, 0.25);
+  CarmenOptions limits;
+  limits.range_min = 0.05;
+  limits.range_max = 50.0;
+  const auto l = parseCarmenLine("FLASER 2 1.0 2.0 1 2 0.5 -3 4 0.25 7.5 host 7.5", limits, error);
+  ASSERT_TRUE(l) << error;
+  EXPECT_DOUBLE_EQ(l->scan.range_min, 0.05);
+  EXPECT_DOUBLE_EQ(l->scan.range_max, 50.0);
+}
+
 TEST(CarmenLog, RobotLaserUsesItsOwnGeometryAndLaserPose) {
   std::ostringstream s;
   s << "ROBOTLASER1 0 -1.5 3.0 0.5 30.0 0.01 0 7";
@@ -52,6 +71,7 @@ TEST(CarmenLog, RobotLaserUsesItsOwnGeometryAndLaserPose) {
   EXPECT_DOUBLE_EQ(r->scan.angle_increment, 0.5);
   EXPECT_DOUBLE_EQ(r->scan.range_max, 30.0);
   EXPECT_DOUBLE_EQ(r->laser_pose.x, 4.0);
+  EXPECT_DOUBLE_EQ(r->odom_pose.x, 3.9);  // the robot's pose
   EXPECT_DOUBLE_EQ(r->scan.stamp, 99.5);
 }
 
@@ -128,4 +148,4 @@ TEST(CarmenLog, MissingFileThrowsNamingIt) {
 }
 
 }  // namespace
-}  // namespace wheelchair_mapping
+}  // namespace wheelchair_logs

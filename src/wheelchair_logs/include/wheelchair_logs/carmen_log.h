@@ -2,27 +2,23 @@
 // gzip-compressed. Other messages (ODOM, PARAM, comments, ...) are ignored.
 #pragma once
 
-#include <wheelchair_core/laser_scan.h>
+#include <wheelchair_logs/log_scan.h>
 
 #include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
 
-namespace wheelchair_mapping {
+namespace wheelchair_logs {
 
 struct CarmenOptions {
   /// Readings at or beyond this are the scanner's "no echo" code (SICK: 81.9 m) and become
   /// +inf (REP-117: no return within range).
   double no_echo_range = 80.0;
-  /// range_max of FLASER scans (ROBOTLASER1 lines carry their own) [m].
+  /// range_max of FLASER scans (ROBOTLASER1 lines carry their own, capped at this) [m].
   double range_max = 80.0;
-};
-
-struct LogScan {
-  wheelchair_core::LaserScan2D scan;
-  wheelchair_core::Pose2D laser_pose;  ///< pose of the laser in the log's world frame
-  size_t line = 0;                     ///< 1-based line number in the log
+  /// range_min of every scan [m] (the logs do not carry one).
+  double range_min = 0.0;
 };
 
 /// Parses one log line. Returns a scan for a valid FLASER / ROBOTLASER1 line; nothing for any
@@ -62,4 +58,4 @@ class CarmenLogReader {
   std::string problems_;
 };
 
-}  // namespace wheelchair_mapping
+}  // namespace wheelchair_logs

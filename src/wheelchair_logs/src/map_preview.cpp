@@ -1,10 +1,10 @@
-#include <wheelchair_mapping/map_preview.h>
+#include <wheelchair_logs/map_preview.h>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 
-namespace wheelchair_mapping {
+namespace wheelchair_logs {
 
 void savePreviewPng(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& png_path) {
   const int w = static_cast<int>(grid.getSizeX());
@@ -28,4 +28,4 @@ void savePreviewPng(const mrpt::maps::COccupancyGridMap2D& grid, const std::stri
   if (!ok) throw std::runtime_error(png_path + ": cannot write the preview image");
 }
 
-}  // namespace wheelchair_mapping
+}  // namespace wheelchair_logs

@@ -1,16 +1,17 @@
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/LaserScan.h>
+#include <tf2/buffer_core.h>
 #include <tf2/exceptions.h>
 #include <tf2_msgs/TFMessage.h>
-#include <wheelchair_mapping/bag_scans.h>
+#include <wheelchair_logs/bag_scans.h>
 #include <wheelchair_ros/conversions.h>
 
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace wheelchair_mapping {
+namespace wheelchair_logs {
 
 struct BagScanReader::Impl {
   rosbag::Bag bag;
@@ -68,6 +69,7 @@ bool BagScanReader::next(LogScan& out) {
     out.scan = wheelchair_ros::fromLaserScanMsg(*msg);
     if (wheelchair_ros::laserPose2D(t.transform, out.laser_pose))
       wheelchair_core::mirrorScanAngles(out.scan);
+    out.odom_pose = out.laser_pose;
     out.line = index;
     ++impl_->it;
     return true;
@@ -75,4 +77,4 @@ bool BagScanReader::next(LogScan& out) {
   return false;
 }
 
-}  // namespace wheelchair_mapping
+}  // namespace wheelchair_logs
