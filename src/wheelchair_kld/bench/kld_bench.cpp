@@ -11,7 +11,7 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
-#include <wheelchair_kld/drive_evaluation.h>
+#include "drive_evaluation.h"
 
 #include <chrono>
 #include <cmath>

@@ -3,7 +3,7 @@
 // bad input.
 #include <gtest/gtest.h>
 #include <mrpt/math/wrap2pi.h>
-#include <wheelchair_kld/drive_evaluation.h>
+#include "drive_evaluation.h"
 
 #include <cmath>
 #include <limits>

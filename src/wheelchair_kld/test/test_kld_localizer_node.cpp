@@ -10,8 +10,8 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_kld/ros/conversions.h>
-#include <wheelchair_kld/synthetic_drive.h>
 #include <wheelchair_ros/conversions.h>
+#include "synthetic_drive.h"
 
 #include <cmath>
 #include <mutex>

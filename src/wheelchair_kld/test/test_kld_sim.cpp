@@ -14,7 +14,6 @@
 #include <std_msgs/String.h>
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_kld/ros/conversions.h>
-#include <wheelchair_kld/synthetic_drive.h>
 #include <wheelchair_msgs/WheelTorques.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_sim/SetPose.h>

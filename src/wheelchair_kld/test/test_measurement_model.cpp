@@ -1,8 +1,8 @@
 // Distance transform against brute force; both measurement models prefer the true pose.
 #include <gtest/gtest.h>
 #include <wheelchair_kld/measurement_model.h>
-#include <wheelchair_kld/synthetic_drive.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
+#include "synthetic_drive.h"
 
 #include <cmath>
 

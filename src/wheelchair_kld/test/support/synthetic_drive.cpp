@@ -1,9 +1,9 @@
+#include "synthetic_drive.h"
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <wheelchair_core/map_io.h>
-#include <wheelchair_kld/synthetic_drive.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 
 #include <cmath>

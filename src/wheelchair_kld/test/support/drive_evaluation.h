@@ -2,7 +2,7 @@
 #pragma once
 
 #include <wheelchair_kld/kld_localizer.h>
-#include <wheelchair_kld/synthetic_drive.h>
+#include "synthetic_drive.h"
 
 #include <chrono>
 #include <vector>

@@ -1,5 +1,5 @@
+#include "drive_evaluation.h"
 #include <mrpt/math/wrap2pi.h>
-#include <wheelchair_kld/drive_evaluation.h>
 
 #include <algorithm>
 #include <chrono>
