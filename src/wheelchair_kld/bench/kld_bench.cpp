@@ -6,12 +6,10 @@
 // {case, method, metric, value, unit}.
 #include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/maps/CMultiMetricMap.h>
-#include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
-#include "drive_evaluation.h"
 
 #include <chrono>
 #include <cmath>
@@ -23,8 +21,12 @@
 #include <string>
 #include <vector>
 
-using mrpt::math::TPose2D;
+#include "drive_evaluation.h"
+
+using wheelchair_core::LaserScan2D;
+using wheelchair_core::Pose2D;
 using namespace wheelchair_kld;
+using namespace wheelchair_kld::test;
 
 namespace {
 
@@ -51,21 +53,18 @@ void report(const std::string& c, const std::string& method, const DriveSummary&
   row(c, method, "mean_update_cpu_time", s.mean_cpu_ms, "ms");
 }
 
-mrpt::math::CMatrixDouble33 diagCov(double sxy, double sth) {
-  mrpt::math::CMatrixDouble33 c;
-  c.setZero();
-  c(0, 0) = c(1, 1) = sxy * sxy;
-  c(2, 2) = sth * sth;
-  return c;
+Eigen::Matrix3d diagCov(double sxy, double sth) {
+  return Eigen::Vector3d(sxy * sxy, sxy * sxy, sth * sth).asDiagonal();
 }
 
-mrpt::obs::CObservation2DRangeScan::Ptr toMrptObservation(const LaserScan& s) {
+/// The scan as MRPT's observation (for MRPT's own filter and map building).
+mrpt::obs::CObservation2DRangeScan::Ptr toMrptObservation(const LaserScan2D& s,
+                                                          const Pose2D& sensor_pose) {
   auto obs = mrpt::obs::CObservation2DRangeScan::Create();
   obs->aperture = static_cast<float>(s.angle_increment * (s.ranges.size() - 1));
   obs->rightToLeft = true;
   obs->maxRange = static_cast<float>(s.range_max);
-  obs->sensorPose =
-      mrpt::poses::CPose3D(s.sensor_pose.x, s.sensor_pose.y, 0, s.sensor_pose.phi, 0, 0);
+  obs->sensorPose = mrpt::poses::CPose3D(sensor_pose.x, sensor_pose.y, 0, sensor_pose.yaw, 0, 0);
   obs->resizeScan(s.ranges.size());
   for (size_t i = 0; i < s.ranges.size(); ++i) {
     const bool ok = std::isfinite(s.ranges[i]) && s.ranges[i] < s.range_max;
@@ -95,13 +94,15 @@ std::vector<DriveSample> loadCarmenDrive(const std::string& path, int every) {
       ls >> v;
       r = v >= kNoEcho ? std::numeric_limits<float>::infinity() : static_cast<float>(v);
     }
-    ls >> s.truth.x >> s.truth.y >> s.truth.phi >> s.odom.x >> s.odom.y >> s.odom.phi;
+    ls >> s.truth.x >> s.truth.y >> s.truth.yaw >> s.odom.x >> s.odom.y >> s.odom.yaw;
     if (!ls) continue;
     // n = 180: -90..+89 deg, 181: -90..+90, 360/361: half-degree steps (data README).
     s.scan.angle_increment = (n >= 360 ? 0.5 : 1.0) * M_PI / 180;
     s.scan.angle_min = -M_PI / 2;
+    s.scan.angle_max = s.scan.angle_min + (n - 1) * s.scan.angle_increment;
+    s.scan.range_min = 0.05;
     s.scan.range_max = 50.0;
-    s.scan.sensor_pose = TPose2D(0, 0, 0);  // the FLASER pose is the laser's
+    s.sensor_pose = Pose2D{0, 0, 0};  // the FLASER pose is the laser's
     out.push_back(std::move(s));
   }
   return out;
@@ -112,8 +113,8 @@ mrpt::maps::COccupancyGridMap2D mapFromDrive(const std::vector<DriveSample>& dri
   mrpt::maps::COccupancyGridMap2D grid(-10, 10, -10, 10, res);
   grid.insertionOptions.maxDistanceInsertion = 30.0f;
   for (const auto& s : drive)
-    grid.insertObservation(*toMrptObservation(s.scan),
-                           mrpt::poses::CPose3D(s.truth.x, s.truth.y, 0, s.truth.phi, 0, 0));
+    grid.insertObservation(*toMrptObservation(s.scan, s.sensor_pose),
+                           mrpt::poses::CPose3D(s.truth.x, s.truth.y, 0, s.truth.yaw, 0, 0));
   return grid;
 }
 
@@ -134,8 +135,8 @@ std::vector<StepRecord> runMrpt(const LocalizationMap& map, const std::vector<Dr
   pdf.options.KLD_params.KLD_delta = kp.delta;
   pdf.options.KLD_params.KLD_minSampleSize = kp.min_particles;
   pdf.options.KLD_params.KLD_maxSampleSize = kp.max_particles;
-  const TPose2D& t0 = drive.front().truth;
-  pdf.resetUniform(t0.x - 0.2, t0.x + 0.2, t0.y - 0.2, t0.y + 0.2, t0.phi - 0.1, t0.phi + 0.1,
+  const Pose2D& t0 = drive.front().truth;
+  pdf.resetUniform(t0.x - 0.2, t0.x + 0.2, t0.y - 0.2, t0.y + 0.2, t0.yaw - 0.1, t0.yaw + 0.1,
                    2000);
   mrpt::bayes::CParticleFilter pf;
   pf.m_options.adaptiveSampleSize = true;
@@ -156,18 +157,19 @@ std::vector<StepRecord> runMrpt(const LocalizationMap& map, const std::vector<Dr
   motion.thrunModel.additional_std_phi = static_cast<float>(mn.min_theta_std);
   pf.m_options.powFactor = kp.measurement.likelihood_exponent;
   std::vector<StepRecord> out;
-  TPose2D last = drive.front().odom;
+  auto mrptPose = [](const Pose2D& p) { return mrpt::poses::CPose2D(p.x, p.y, p.yaw); };
+  Pose2D last = drive.front().odom;
   bool first = true;
   for (const auto& s : drive) {
     StepRecord r;
-    const mrpt::poses::CPose2D inc = mrpt::poses::CPose2D(s.odom) - mrpt::poses::CPose2D(last);
+    const mrpt::poses::CPose2D inc = mrptPose(s.odom) - mrptPose(last);
     if (first || inc.norm() >= kp.update_min_d || std::abs(inc.phi()) >= kp.update_min_a) {
       mrpt::obs::CActionCollection actions;
       mrpt::obs::CActionRobotMovement2D act;
       act.computeFromOdometry(inc, motion);
       actions.insert(act);
       mrpt::obs::CSensoryFrame sf;
-      sf.insert(toMrptObservation(s.scan));
+      sf.insert(toMrptObservation(s.scan, s.sensor_pose));
       const UpdateTimer timer;
       pf.executeOn(pdf, &actions, &sf);
       timer.stop(r);
@@ -178,7 +180,7 @@ std::vector<StepRecord> runMrpt(const LocalizationMap& map, const std::vector<Dr
     mrpt::poses::CPose2D mean;
     pdf.getMean(mean);
     r.error_xy = std::hypot(mean.x() - s.truth.x, mean.y() - s.truth.y);
-    r.error_theta = std::abs(mrpt::math::wrapToPi(mean.phi() - s.truth.phi));
+    r.error_theta = std::abs(wheelchair_core::angleDifference(mean.phi(), s.truth.yaw));
     r.particles = static_cast<int>(pdf.size());
     out.push_back(r);
   }

@@ -16,11 +16,9 @@
 #include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_kld/kld_localizer.h>
-#include <wheelchair_kld/ros/conversions.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/shared_tf.h>
-#include <Eigen/Dense>
 #include <pluginlib/class_list_macros.hpp>
 
 #include <map>
@@ -31,6 +29,8 @@
 #include <string>
 
 namespace wheelchair_kld {
+
+using wheelchair_core::Pose2D;
 
 namespace {
 KldParams loadParams(const ros::NodeHandle& pnh) {
@@ -149,10 +149,9 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
                    msg->header.frame_id.c_str(), map_frame_.c_str());
       return;
     }
-    const auto pose = toPose2D(msg->pose.pose);
-    auto cov = fromRosCovariance(msg->pose.covariance);
-    if (!(std::isfinite(pose.x) && std::isfinite(pose.y) && std::isfinite(pose.phi)) ||
-        !cov.asEigen().allFinite()) {
+    const Pose2D pose = wheelchair_ros::toPose2D(msg->pose.pose);
+    Eigen::Matrix3d cov = wheelchair_ros::planarCovariance(msg->pose.covariance);
+    if (!pose.isFinite() || !cov.allFinite()) {
       NODELET_WARN("kld: initial pose with non-finite values ignored");
       return;
     }
@@ -160,7 +159,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
       cov(0, 0) = cov(1, 1) = 0.25 * 0.25;
       cov(2, 2) = 0.26 * 0.26;
     }
-    NODELET_INFO("kld: initial pose (%.2f, %.2f, %.1f deg)", pose.x, pose.y, pose.phi * 180 / M_PI);
+    NODELET_INFO("kld: initial pose (%.2f, %.2f, %.1f deg)", pose.x, pose.y, pose.yaw * 180 / M_PI);
     if (localizer_)
       localizer_->initGaussian(pose, cov);
     else
@@ -220,19 +219,21 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     if (msg->header.stamp <= last_scan_stamp_ &&
         msg->header.stamp + ros::Duration(1.0) > last_scan_stamp_)
       return;
-    mrpt::math::TPose2D odom, laser;
+    Pose2D odom, laser;
+    wheelchair_core::LaserScan2D scan = wheelchair_ros::fromLaserScanMsg(*msg);
     try {
-      odom = toPose2D(
+      odom = wheelchair_ros::toPose2D(
           tf_buffer_->lookupTransform(odom_frame_, base_frame_, msg->header.stamp).transform);
-      laser = toPose2D(
-          tf_buffer_->lookupTransform(base_frame_, msg->header.frame_id, ros::Time(0)).transform);
+      const auto mount =
+          tf_buffer_->lookupTransform(base_frame_, msg->header.frame_id, ros::Time(0)).transform;
+      if (wheelchair_ros::laserPose2D(mount, laser)) wheelchair_core::mirrorScanAngles(scan);
     } catch (const tf2::TransformException& e) {
       warnThrottled("tf", std::string("kld: scan skipped, tf missing: ") + e.what());
       return;
     }
     last_scan_stamp_ = msg->header.stamp;
     last_tf_ok_ = ros::Time::now();
-    const auto result = localizer_->update(odom, fromScanMsg(*msg, laser));
+    const auto result = localizer_->update(odom, scan, laser);
     if (result == UpdateResult::kRejected) {
       warnThrottled(localizer_->lastRejection(),
                     "kld: scan rejected: " + localizer_->lastRejection());
@@ -250,30 +251,25 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     geometry_msgs::PoseWithCovarianceStamped pose;
     pose.header.stamp = stamp;
     pose.header.frame_id = map_frame_;
-    pose.pose = toPoseWithCovariance(localizer_->estimate());
+    pose.pose = wheelchair_ros::toPoseWithCovarianceMsg(localizer_->estimate().mean,
+                                                        localizer_->estimate().cov);
     pose_pub_.publish(pose);
-    auto cloud = toPoseArray(localizer_->particles());
-    cloud.header = pose.header;
-    cloud_pub_.publish(cloud);
+    cloud_pub_.publish(
+        wheelchair_ros::toPoseArrayMsg(localizer_->particlePoses(), map_frame_, stamp));
     std_msgs::Int32 count;
-    count.data = static_cast<int>(localizer_->particles().size());
+    count.data = static_cast<int>(localizer_->particleCount());
     count_pub_.publish(count);
   }
 
   /// map->odom = estimate (map->base_link) composed with the inverse of odom->base_link,
   /// future-dated by the transform tolerance (REP-105).
-  void publishMapToOdom(const ros::Time& stamp, const mrpt::math::TPose2D& odom) {
-    const auto& e = localizer_->estimate().mean;
-    const double yaw = e.phi - odom.phi;
-    const double c = std::cos(yaw), s = std::sin(yaw);
+  void publishMapToOdom(const ros::Time& stamp, const Pose2D& odom) {
     geometry_msgs::TransformStamped t;
     t.header.stamp = stamp + ros::Duration(transform_tolerance_);
     t.header.frame_id = map_frame_;
     t.child_frame_id = odom_frame_;
-    t.transform.translation.x = e.x - (c * odom.x - s * odom.y);
-    t.transform.translation.y = e.y - (s * odom.x + c * odom.y);
-    t.transform.rotation.z = std::sin(yaw / 2);
-    t.transform.rotation.w = std::cos(yaw / 2);
+    t.transform = wheelchair_ros::toTransformMsg(
+        wheelchair_core::compose(localizer_->estimate().mean, wheelchair_core::inverse(odom)));
     tf_broadcaster_.sendTransform(t);
   }
 
@@ -312,7 +308,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   uint64_t seed_ = 1;
   std::mutex mutex_;
   std::unique_ptr<KldLocalizer> localizer_;
-  std::optional<std::pair<mrpt::math::TPose2D, mrpt::math::CMatrixDouble33>> pending_init_;
+  std::optional<std::pair<Pose2D, Eigen::Matrix3d>> pending_init_;
   std::string last_status_;
   std::map<std::string, ros::WallTime> last_warning_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;

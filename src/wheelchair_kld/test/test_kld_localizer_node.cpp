@@ -9,28 +9,28 @@
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_core/map_io.h>
-#include <wheelchair_kld/ros/conversions.h>
 #include <wheelchair_ros/conversions.h>
-#include "synthetic_drive.h"
 
 #include <cmath>
 #include <mutex>
 #include <string>
 #include <vector>
 
-using namespace wheelchair_kld;
+#include "synthetic_drive.h"
+
+using namespace wheelchair_kld::test;
+using wheelchair_ros::toPose2D;
+using wheelchair_ros::toPoseMsg;
 
 namespace {
-geometry_msgs::TransformStamped transform(const mrpt::math::TPose2D& p, const std::string& parent,
-                                          const std::string& child, const ros::Time& stamp) {
+geometry_msgs::TransformStamped transform(const wheelchair_core::Pose2D& p,
+                                          const std::string& parent, const std::string& child,
+                                          const ros::Time& stamp) {
   geometry_msgs::TransformStamped t;
   t.header.stamp = stamp;
   t.header.frame_id = parent;
   t.child_frame_id = child;
-  const auto pose = toPoseMsg(p);
-  t.transform.translation.x = pose.position.x;
-  t.transform.translation.y = pose.position.y;
-  t.transform.rotation = pose.orientation;
+  t.transform = wheelchair_ros::toTransformMsg(p);
   return t;
 }
 }  // namespace
@@ -75,16 +75,8 @@ class KldLocalizerNode : public testing::Test {
   }
 
   sensor_msgs::LaserScan scanMsg(size_t i, const ros::Time& stamp) const {
-    sensor_msgs::LaserScan scan;
+    sensor_msgs::LaserScan scan = wheelchair_ros::toLaserScanMsg(drive_[i].scan, "laser");
     scan.header.stamp = stamp;
-    scan.header.frame_id = "laser";
-    const auto& s = drive_[i].scan;
-    scan.angle_min = s.angle_min;
-    scan.angle_increment = s.angle_increment;
-    scan.angle_max = scan.angle_min + scan.angle_increment * (s.ranges.size() - 1);
-    scan.range_min = s.range_min;
-    scan.range_max = s.range_max;
-    scan.ranges = s.ranges;
     return scan;
   }
   /// Sends odom -> base_link of drive sample i stamped `stamp`.

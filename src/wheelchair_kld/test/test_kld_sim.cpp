@@ -5,7 +5,6 @@
 // bad input.
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <gtest/gtest.h>
-#include <mrpt/math/wrap2pi.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -13,7 +12,6 @@
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/String.h>
 #include <wheelchair_core/map_io.h>
-#include <wheelchair_kld/ros/conversions.h>
 #include <wheelchair_msgs/WheelTorques.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_sim/SetPose.h>
@@ -26,16 +24,17 @@
 #include <string>
 #include <vector>
 
-using mrpt::math::TPose2D;
-using namespace wheelchair_kld;
+using wheelchair_core::Pose2D;
+using wheelchair_ros::toPose2D;
+using wheelchair_ros::toPoseMsg;
 
 namespace {
 
 // Waypoints in the flat's living room (the chair starts at the first) where the footprint can
 // turn in place (0.86 m from every obstacle), and a straight run up the hallway.
-const std::vector<TPose2D> kLivingRoomLoop = {
+const std::vector<Pose2D> kLivingRoomLoop = {
     {3.0, 4.7, 0}, {5.0, 4.7, 0}, {1.5, 4.5, 0}, {3.0, 4.7, 0}};
-const TPose2D kHallwaySouth(5.1, 7.0, M_PI / 2), kHallwayNorth(5.1, 11.2, M_PI / 2);
+const Pose2D kHallwaySouth{5.1, 7.0, M_PI / 2}, kHallwayNorth{5.1, 11.2, M_PI / 2};
 
 struct PoseError {
   double xy, theta;
@@ -120,14 +119,14 @@ class KldSim : public ::testing::Test {
 
   struct Stamped {
     ros::Time stamp;
-    TPose2D pose;
+    Pose2D pose;
     double v, w;
   };
   bool haveTruth() {
     std::lock_guard<std::mutex> lock(mutex_);
     return !truth_.empty();
   }
-  TPose2D truthNow() {
+  Pose2D truthNow() {
     std::lock_guard<std::mutex> lock(mutex_);
     return truth_.back().pose;
   }
@@ -136,7 +135,7 @@ class KldSim : public ::testing::Test {
     return status_;
   }
   /// Truth nearest to `stamp` (published every simulator step).
-  TPose2D truthAt(const ros::Time& stamp) {
+  Pose2D truthAt(const ros::Time& stamp) {
     const Stamped* best = &truth_.front();
     for (const auto& t : truth_)
       if (std::abs((t.stamp - stamp).toSec()) < std::abs((best->stamp - stamp).toSec())) best = &t;
@@ -147,14 +146,14 @@ class KldSim : public ::testing::Test {
     std::lock_guard<std::mutex> lock(mutex_);
     std::vector<PoseError> out;
     for (size_t i = from; i < poses_.size(); ++i) {
-      const TPose2D t = truthAt(poses_[i].stamp), &e = poses_[i].pose;
-      out.push_back(
-          {std::hypot(e.x - t.x, e.y - t.y), std::abs(mrpt::math::wrapToPi(e.phi - t.phi))});
+      const Pose2D t = truthAt(poses_[i].stamp), &e = poses_[i].pose;
+      out.push_back({std::hypot(e.x - t.x, e.y - t.y),
+                     std::abs(wheelchair_core::angleDifference(e.yaw, t.yaw))});
       if (getenv("KLD_SIM_DEBUG"))
-        std::cout << "along " << (e.x - t.x) * std::cos(t.phi) + (e.y - t.y) * std::sin(t.phi)
-                  << " across " << -(e.x - t.x) * std::sin(t.phi) + (e.y - t.y) * std::cos(t.phi)
+        std::cout << "along " << (e.x - t.x) * std::cos(t.yaw) + (e.y - t.y) * std::sin(t.yaw)
+                  << " across " << -(e.x - t.x) * std::sin(t.yaw) + (e.y - t.y) * std::cos(t.yaw)
                   << " dx " << e.x - t.x << " dy " << e.y - t.y << " truth " << t.x << " " << t.y
-                  << " " << t.phi << " stamp " << poses_[i].stamp.toSec() << "\n";
+                  << " " << t.yaw << " stamp " << poses_[i].stamp.toSec() << "\n";
     }
     return out;
   }
@@ -172,7 +171,7 @@ class KldSim : public ::testing::Test {
   }
 
   /// Turns towards, then drives to `goal` (x, y) at 0.4 m/s with a velocity loop on the truth.
-  bool driveTo(const TPose2D& goal, double wall_timeout = 40.0) {
+  bool driveTo(const Pose2D& goal, double wall_timeout = 40.0) {
     const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(wall_timeout);
     ros::Rate rate(50.0);  // sim time
     while (ros::ok() && ros::WallTime::now() < end) {
@@ -182,7 +181,7 @@ class KldSim : public ::testing::Test {
         t = truth_.back();
       }
       const double dx = goal.x - t.pose.x, dy = goal.y - t.pose.y, dist = std::hypot(dx, dy);
-      const double heading_error = mrpt::math::wrapToPi(std::atan2(dy, dx) - t.pose.phi);
+      const double heading_error = wheelchair_core::angleDifference(std::atan2(dy, dx), t.pose.yaw);
       if (dist < 0.08) {
         torques(0, 0);
         return waitFor([&] { return std::abs(truthSpeed()) < 0.02; }, 10.0);
@@ -202,7 +201,7 @@ class KldSim : public ::testing::Test {
     std::lock_guard<std::mutex> lock(mutex_);
     return truth_.back().v;
   }
-  bool driveRoute(const std::vector<TPose2D>& route) {
+  bool driveRoute(const std::vector<Pose2D>& route) {
     for (const auto& p : route)
       if (!driveTo(p)) return false;
     return true;
@@ -262,7 +261,7 @@ TEST_F(KldSim, NoticesAndRecoversFromKidnapping) {
   wheelchair_sim::SetPose srv;
   srv.request.x = kHallwaySouth.x;  // the hallway, 2.5 m away, turned by 90 deg
   srv.request.y = kHallwaySouth.y;
-  srv.request.yaw = kHallwaySouth.phi;
+  srv.request.yaw = kHallwaySouth.yaw;
   ASSERT_TRUE(teleport.call(srv) && srv.response.success) << srv.response.message;
   size_t seen;
   {

@@ -68,6 +68,24 @@ boost::array<double, 36> toRosCovariance(const Eigen::Matrix3d& planar) {
   return cov;
 }
 
+geometry_msgs::PoseWithCovariance toPoseWithCovarianceMsg(const Pose2D& pose,
+                                                          const Eigen::Matrix3d& covariance) {
+  geometry_msgs::PoseWithCovariance p;
+  p.pose = toPoseMsg(pose);
+  p.covariance = toRosCovariance(covariance);
+  return p;
+}
+
+geometry_msgs::PoseArray toPoseArrayMsg(const std::vector<Pose2D>& poses,
+                                        const std::string& frame_id, const ros::Time& stamp) {
+  geometry_msgs::PoseArray a;
+  a.header.frame_id = frame_id;
+  a.header.stamp = stamp;
+  a.poses.reserve(poses.size());
+  for (const Pose2D& p : poses) a.poses.push_back(toPoseMsg(p));
+  return a;
+}
+
 LaserScan2D fromLaserScanMsg(const sensor_msgs::LaserScan& msg) {
   LaserScan2D scan;
   scan.stamp = msg.header.stamp.toSec();

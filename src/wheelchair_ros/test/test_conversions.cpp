@@ -92,6 +92,20 @@ TEST(RosConversions, PlanarCovarianceIsTheXYYawBlock) {
   EXPECT_EQ(planarCovariance(ros_cov), c);
 }
 
+TEST(RosConversions, AnEstimateAndACloudKeepTheirPosesAndCovariance) {
+  Eigen::Matrix3d c;
+  c << 0.04, 0.01, 0, 0.01, 0.09, 0, 0, 0, 0.0025;
+  const auto estimate = toPoseWithCovarianceMsg({1.0, -2.0, 0.3}, c);
+  EXPECT_EQ(toPose2D(estimate.pose).x, 1.0);
+  EXPECT_NEAR(toPose2D(estimate.pose).yaw, 0.3, 1e-12);
+  EXPECT_EQ(planarCovariance(estimate.covariance), c);
+  const auto cloud = toPoseArrayMsg({{1, 2, 0.5}, {3, -4, -2.0}}, "map", ros::Time(2.0));
+  ASSERT_EQ(cloud.poses.size(), 2u);
+  EXPECT_EQ(cloud.header.frame_id, "map");
+  EXPECT_EQ(cloud.header.stamp, ros::Time(2.0));
+  EXPECT_NEAR(toPose2D(cloud.poses[1]).yaw, -2.0, 1e-12);
+}
+
 TEST(RosConversions, AnUpsideDownLaserIsRecognized) {
   geometry_msgs::Transform t;
   t.rotation.x = 1.0;  // 180 deg about x: z points down

@@ -34,6 +34,9 @@ struct MeasurementParams {
 };
 
 struct KldParams {
+  /// A scan with fewer returns than this share of its beams is rejected.
+  double min_echo_fraction = 0.2;
+
   // KLD-sampling (Fox 2003).
   double epsilon = 0.05;  ///< K-L error bound
   double delta = 0.01;    ///< 1 - confidence

@@ -1,12 +1,11 @@
 #include "drive_evaluation.h"
-#include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
 
-namespace wheelchair_kld {
+namespace wheelchair_kld::test {
 
 namespace {
 double threadCpuMs() {
@@ -30,12 +29,12 @@ std::vector<StepRecord> runDrive(KldLocalizer& localizer, const std::vector<Driv
   for (const auto& s : drive) {
     StepRecord r;
     const UpdateTimer timer;
-    r.updated = localizer.update(s.odom, s.scan) == UpdateResult::kUpdated;
+    r.updated = localizer.update(s.odom, s.scan, s.sensor_pose) == UpdateResult::kUpdated;
     timer.stop(r);
     const auto& e = localizer.estimate().mean;
     r.error_xy = std::hypot(e.x - s.truth.x, e.y - s.truth.y);
-    r.error_theta = std::abs(mrpt::math::wrapToPi(e.phi - s.truth.phi));
-    r.particles = static_cast<int>(localizer.particles().size());
+    r.error_theta = std::abs(wheelchair_core::angleDifference(e.yaw, s.truth.yaw));
+    r.particles = static_cast<int>(localizer.particleCount());
     r.localized = localizer.status().localized;
     out.push_back(r);
   }
@@ -71,4 +70,4 @@ DriveSummary summarize(const std::vector<StepRecord>& steps, size_t from) {
   return s;
 }
 
-}  // namespace wheelchair_kld
+}  // namespace wheelchair_kld::test

@@ -1,13 +1,15 @@
-// Runs a localizer over a recorded or simulated drive and scores it against ground truth.
+// Test and bench harness (library wheelchair_kld_test_support, never installed): runs a
+// localizer over a recorded or simulated drive and scores it against ground truth.
 #pragma once
 
 #include <wheelchair_kld/kld_localizer.h>
+
 #include "synthetic_drive.h"
 
 #include <chrono>
 #include <vector>
 
-namespace wheelchair_kld {
+namespace wheelchair_kld::test {
 
 struct StepRecord {
   bool updated = false;
@@ -45,4 +47,4 @@ struct DriveSummary {
 /// Statistics over the updated steps with index >= `from`.
 DriveSummary summarize(const std::vector<StepRecord>& steps, size_t from = 0);
 
-}  // namespace wheelchair_kld
+}  // namespace wheelchair_kld::test

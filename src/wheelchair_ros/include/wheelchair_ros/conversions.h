@@ -3,6 +3,7 @@
 #pragma once
 
 #include <geometry_msgs/Pose.h>
+#include <geometry_msgs/PoseArray.h>
 #include <geometry_msgs/PoseWithCovariance.h>
 #include <geometry_msgs/Quaternion.h>
 #include <geometry_msgs/Transform.h>
@@ -41,6 +42,12 @@ geometry_msgs::Transform toTransformMsg(const wheelchair_core::Pose2D& pose);
 /// (the other entries zero).
 Eigen::Matrix3d planarCovariance(const boost::array<double, 36>& covariance);
 boost::array<double, 36> toRosCovariance(const Eigen::Matrix3d& planar);
+/// A planar pose with its (x, y, yaw) covariance, e.g. a localizer's estimate.
+geometry_msgs::PoseWithCovariance toPoseWithCovarianceMsg(const wheelchair_core::Pose2D& pose,
+                                                          const Eigen::Matrix3d& covariance);
+/// Many poses in one frame, e.g. a particle filter's cloud.
+geometry_msgs::PoseArray toPoseArrayMsg(const std::vector<wheelchair_core::Pose2D>& poses,
+                                        const std::string& frame_id, const ros::Time& stamp);
 
 /// The scan's fields as they are (REP-117 meanings are the core's classifyBeam).
 wheelchair_core::LaserScan2D fromLaserScanMsg(const sensor_msgs::LaserScan& msg);
