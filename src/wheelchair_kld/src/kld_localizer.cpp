@@ -262,34 +262,51 @@ void KldLocalizer::keepPlausibleHypotheses() {
   normalizeAndEstimate();
 }
 
-LocalizationStatus KldLocalizer::status() const {
-  LocalizationStatus s;
-  std::ostringstream why;
+wheelchair_core::LocalizationStatus KldLocalizer::status() const {
+  using State = wheelchair_core::LocalizationState;
+  wheelchair_core::LocalizationStatus s;
+  s.particles = static_cast<int>(particles_.size());
   if (!initialized()) {
-    s.reason = "not initialized (no initial pose, no global localization)";
+    s.state = State::kUninitialized;
+    s.detail = "not initialized (no initial pose, no global localization)";
     return s;
   }
   const double sxy = std::sqrt(std::max(estimate_.cov(0, 0), estimate_.cov(1, 1)));
   const double sth = std::sqrt(estimate_.cov(2, 2));
+  s.position_std = sxy;
+  s.heading_std = sth;
+  s.hypotheses = estimate_.cluster_count;
+  s.best_weight = estimate_.cluster_weight;
+  if (!pending_first_update_) {
+    s.inlier_fraction = inliers_;
+    s.mean_fit = meanFit();
+  }
+  std::ostringstream why;
+  s.state = State::kLocalized;
   if (pending_first_update_) {
+    s.state = State::kLocalizing;
     why << "waiting for the first scan after initialization";
   } else if (estimate_.cluster_weight < params_.localized_min_cluster_weight) {
+    s.state = State::kAmbiguous;
     why << "ambiguous: " << estimate_.cluster_count << " pose hypotheses (best holds "
         << static_cast<int>(100 * estimate_.cluster_weight) << " % of the weight)";
   } else if (sxy > params_.localized_max_xy_std) {
+    s.state = State::kUncertain;
     why << "position uncertainty too large (sigma " << sxy << " m)";
   } else if (sth > params_.localized_max_theta_std) {
+    s.state = State::kUncertain;
     why << "heading uncertainty too large (sigma " << sth * 180 / M_PI << " deg)";
   } else if (inliers_ < params_.localized_min_inliers || meanFit() < params_.fit_min_mean) {
+    s.state = State::kMisfit;
     why << "scan does not fit the map at the estimate (" << static_cast<int>(100 * inliers_)
         << " % of the echoes within " << params_.inlier_tolerance << " m of an obstacle, "
         << static_cast<int>(100 * meanFit()) << " % over the last " << fit_window_.size()
         << " updates)";
   } else if (w_slow_ > 0 && w_fast_ < params_.recovery_ratio * w_slow_) {
+    s.state = State::kMisfit;
     why << "scans no longer match the map (short/long-term likelihood " << w_fast_ / w_slow_ << ")";
   }
-  s.reason = why.str();
-  s.localized = s.reason.empty();
+  s.detail = why.str();
   return s;
 }
 

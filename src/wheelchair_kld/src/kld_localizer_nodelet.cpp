@@ -1,6 +1,6 @@
 // ROS layer of the KLD localizer: /map, /scan and tf odom->base_link in; tf map->odom,
-// /kld_pose, /particlecloud, kld/particle_count and kld/localized ("localized" or the reason
-// why not) out; /initialpose and the global_localization service.
+// /kld_pose, /particlecloud, kld/particle_count and /localization/status (the typed verdict,
+// latched) out; /initialpose and the global_localization service.
 #include <geometry_msgs/PoseArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
@@ -17,6 +17,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_kld/kld_localizer.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/shared_tf.h>
 #include <pluginlib/class_list_macros.hpp>
@@ -30,6 +31,8 @@
 
 namespace wheelchair_kld {
 
+using wheelchair_core::LocalizationState;
+using wheelchair_core::LocalizationStatus;
 using wheelchair_core::Pose2D;
 
 namespace {
@@ -91,7 +94,8 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("kld_pose", 5, true);
     cloud_pub_ = nh.advertise<geometry_msgs::PoseArray>("particlecloud", 2, true);
     count_pub_ = nh.advertise<std_msgs::Int32>("kld/particle_count", 5);
-    status_pub_ = nh.advertise<std_msgs::String>("kld/localized", 5, true);
+    status_pub_ = nh.advertise<wheelchair_msgs::LocalizationStatus>("localization/status", 5, true);
+    legacy_status_pub_ = nh.advertise<std_msgs::String>("kld/localized", 5, true);
     map_sub_ = nh.subscribe("map", 1, &KldLocalizerNodelet::onMap, this);
     // Like amcl: a scan waits (in a bounded queue, without blocking a thread) until odom ->
     // base_link is known at its stamp; odometry may lag the laser by a few tens of ms.
@@ -109,7 +113,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     init_sub_ = nh.subscribe("initialpose", 2, &KldLocalizerNodelet::onInitialPose, this);
     global_srv_ = nh.advertiseService("global_localization",
                                       &KldLocalizerNodelet::onGlobalLocalization, this);
-    publishStatus("no map yet");
+    publishStatus(noData("no map yet"));
   }
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
@@ -125,7 +129,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     }
     const bool had = localizer_ != nullptr;
     std::optional<PoseEstimate> keep;
-    if (had && localizer_->status().localized) keep = localizer_->estimate();
+    if (had && localizer_->status().localized()) keep = localizer_->estimate();
     if (had)
       NODELET_WARN("kld: new map (%ux%u cells); %s", msg->info.width, msg->info.height,
                    keep ? "keeping the current estimate" : "not localized: waiting for a pose");
@@ -139,7 +143,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
       localizer_->initGlobal();
     }
     pending_init_.reset();
-    publishStatus(localizer_->status().reason);
+    publishStatus(localizer_->status());
   }
 
   void onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
@@ -192,7 +196,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
       std::ostringstream why;
       why << "tf missing: no " << odom_frame_ << " -> " << base_frame_
           << " transform at the scan times for more than " << tf_timeout_ << " s";
-      publishStatus(why.str());
+      publishStatus(noData(why.str()));
     }
   }
 
@@ -211,7 +215,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   void onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!localizer_) {
-      publishStatus("no map yet");
+      publishStatus(noData("no map yet"));
       return;
     }
     // A scan the filter released after a newer one is already past (more than 1 s back: the
@@ -237,11 +241,11 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     if (result == UpdateResult::kRejected) {
       warnThrottled(localizer_->lastRejection(),
                     "kld: scan rejected: " + localizer_->lastRejection());
-      publishStatus("bad scan: " + localizer_->lastRejection());
+      publishStatus(noData("bad scan: " + localizer_->lastRejection()));
       return;
     }
     const auto status = localizer_->status();
-    publishStatus(status.localized ? "" : status.reason);
+    publishStatus(status);
     if (!localizer_->initialized()) return;
     if (result == UpdateResult::kUpdated) publishEstimate(msg->header.stamp);
     publishMapToOdom(msg->header.stamp, odom);
@@ -283,18 +287,29 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     NODELET_WARN("%s", text.c_str());
   }
 
-  /// "localized" or the reason why not (the safety supervisor's input).
-  void publishStatus(const std::string& why_not) {
-    std_msgs::String s;
-    s.data = why_not.empty() ? "localized" : why_not;
-    if (s.data != last_status_) {
-      if (why_not.empty())
+  /// No map, or no usable scan / tf: the filter's numbers (if any) with that reason.
+  LocalizationStatus noData(const std::string& why) const {
+    LocalizationStatus s = localizer_ ? localizer_->status() : LocalizationStatus();
+    s.state = LocalizationState::kNoData;
+    s.detail = why;
+    return s;
+  }
+
+  /// The verdict on /localization/status (the supervisor's, controller's and HMI's input),
+  /// logged when its text changes.
+  void publishStatus(const LocalizationStatus& status) {
+    const std::string text = status.localized() ? "localized" : status.detail;
+    if (text != last_status_) {
+      if (status.localized())
         NODELET_INFO("kld: localized");
       else
-        warnThrottled("status: " + why_not, "kld: not localized: " + why_not);
-      last_status_ = s.data;
+        warnThrottled("status: " + status.detail, "kld: not localized: " + status.detail);
+      last_status_ = text;
     }
-    status_pub_.publish(s);
+    status_pub_.publish(wheelchair_ros::toLocalizationStatusMsg(status, ros::Time::now()));
+    std_msgs::String legacy;  // the old String topic, until its consumers read the typed one
+    legacy.data = text;
+    legacy_status_pub_.publish(legacy);
   }
 
   KldParams params_;
@@ -313,7 +328,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   std::map<std::string, ros::WallTime> last_warning_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
-  ros::Publisher pose_pub_, cloud_pub_, count_pub_, status_pub_;
+  ros::Publisher pose_pub_, cloud_pub_, count_pub_, status_pub_, legacy_status_pub_;
   message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> scan_filter_;
   ros::Subscriber map_sub_, init_sub_;

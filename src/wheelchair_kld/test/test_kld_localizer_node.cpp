@@ -1,14 +1,15 @@
 // rostest: feeds the localizer node a map, tf and synthetic scans of a drive in the flat world
-// (laserScanSimulator, noisy odometry) and checks /kld_pose and kld/localized against the truth.
+// (laserScanSimulator, noisy odometry) and checks /kld_pose and /localization/status against the
+// truth.
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
-#include <std_msgs/String.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_core/map_io.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
 
 #include <cmath>
@@ -21,6 +22,7 @@
 using namespace wheelchair_kld::test;
 using wheelchair_ros::toPose2D;
 using wheelchair_ros::toPoseMsg;
+using Status = wheelchair_msgs::LocalizationStatus;
 
 namespace {
 geometry_msgs::TransformStamped transform(const wheelchair_core::Pose2D& p,
@@ -50,18 +52,18 @@ class KldLocalizerNode : public testing::Test {
           last_pose_ = *m;
           ++poses_;
         });
-    status_sub_ = nh_.subscribe<std_msgs::String>("kld/localized", 50,
-                                                  [this](const std_msgs::String::ConstPtr& m) {
-                                                    std::lock_guard<std::mutex> lock(mutex_);
-                                                    statuses_.push_back(m->data);
-                                                  });
+    status_sub_ =
+        nh_.subscribe<Status>("localization/status", 50, [this](const Status::ConstPtr& m) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          statuses_.push_back(*m);
+        });
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
     scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
     init_pub_ = nh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("initialpose", 1, true);
     static_tf_.sendTransform(transform(dp_.sensor_pose, "base_link", "laser", ros::Time::now()));
     map_pub_.publish(wheelchair_ros::toOccupancyGrid(map, "map", ros::Time::now()));
     // Wait for the localizer to subscribe and to have the map.
-    for (int i = 0; i < 100 && (scan_pub_.getNumSubscribers() == 0 || status().empty()); ++i)
+    for (int i = 0; i < 100 && (scan_pub_.getNumSubscribers() == 0 || statusCount() == 0); ++i)
       ros::Duration(0.05).sleep();
     ASSERT_GT(scan_pub_.getNumSubscribers(), 0u);
     geometry_msgs::PoseWithCovarianceStamped init;
@@ -83,12 +85,13 @@ class KldLocalizerNode : public testing::Test {
   void sendOdom(size_t i, const ros::Time& stamp) {
     tf_.sendTransform(transform(drive_[i].odom, "odom", "base_link", stamp));
   }
-  std::string status() {
+  Status status() {
     std::lock_guard<std::mutex> lock(mutex_);
-    return statuses_.empty() ? "" : statuses_.back();
+    return statuses_.empty() ? Status() : statuses_.back();
   }
+  bool localized() { return status().state == Status::LOCALIZED; }
   /// Statuses received from index `from` on.
-  std::vector<std::string> statusesSince(size_t from) {
+  std::vector<Status> statusesSince(size_t from) {
     std::lock_guard<std::mutex> lock(mutex_);
     return {statuses_.begin() + std::min(from, statuses_.size()), statuses_.end()};
   }
@@ -110,7 +113,7 @@ class KldLocalizerNode : public testing::Test {
   std::vector<DriveSample> drive_;
   std::mutex mutex_;
   geometry_msgs::PoseWithCovarianceStamped last_pose_;
-  std::vector<std::string> statuses_;
+  std::vector<Status> statuses_;
   int poses_ = 0;
   ros::Subscriber pose_sub_, status_sub_;
   ros::Publisher map_pub_, scan_pub_, init_pub_;
@@ -138,7 +141,7 @@ TEST_F(KldLocalizerNode, TracksASyntheticDriveAndReportsLocalized) {
   const auto p = toPose2D(lastPose().pose.pose);
   EXPECT_LT(std::hypot(p.x - drive_[n - 1].truth.x, p.y - drive_[n - 1].truth.y), 0.1);
   EXPECT_LT(worst, 0.25);
-  EXPECT_EQ(status(), "localized");
+  EXPECT_TRUE(localized()) << status().detail;
 }
 
 // Odometry that lags the laser by 30 ms (each scan is published before the odom -> base_link
@@ -156,21 +159,23 @@ TEST_F(KldLocalizerNode, ToleratesOdometryLagButReportsATfOutage) {
   };
   sendOdom(0, ros::Time::now());
   for (; i < 15;) step(true);  // first updates after the initial pose
-  ASSERT_EQ(status(), "localized");
+  ASSERT_TRUE(localized()) << status().detail;
   const size_t lag_from = statusCount();
   for (; i < 45;) step(i != 30);  // scan 30's odometry never comes: it waits 130 ms for scan 31's
   const auto during_lag = statusesSince(lag_from);
   EXPECT_GE(during_lag.size(), 25u) << "scans with lagging odometry were not used";
-  for (const auto& s : during_lag) EXPECT_EQ(s, "localized") << "flipped by a 30 ms odom lag";
+  for (const auto& s : during_lag)
+    EXPECT_EQ(s.state, Status::LOCALIZED) << "flipped by a 30 ms odom lag: " << s.detail;
 
   const size_t outage_from = statusCount();
   for (const size_t end = i + 10; i < end;) step(false);  // 1 s without odometry
   bool reported = false;
-  for (const auto& s : statusesSince(outage_from)) reported |= s.rfind("tf missing", 0) == 0;
-  EXPECT_TRUE(reported) << "a 1 s tf outage was not reported; last status: " << status();
+  for (const auto& s : statusesSince(outage_from))
+    reported |= s.state == Status::NO_DATA && s.detail.rfind("tf missing", 0) == 0;
+  EXPECT_TRUE(reported) << "a 1 s tf outage was not reported; last status: " << status().detail;
 
   for (const size_t end = i + 10; i < end;) step(true);
-  EXPECT_EQ(status(), "localized") << "no recovery after the tf outage";
+  EXPECT_TRUE(localized()) << "no recovery after the tf outage: " << status().detail;
 }
 
 int main(int argc, char** argv) {

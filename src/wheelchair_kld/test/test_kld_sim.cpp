@@ -10,8 +10,8 @@
 #include <ros/ros.h>
 #include <rosgraph_msgs/Log.h>
 #include <sensor_msgs/LaserScan.h>
-#include <std_msgs/String.h>
 #include <wheelchair_core/map_io.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_msgs/WheelTorques.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_sim/SetPose.h>
@@ -27,6 +27,7 @@
 using wheelchair_core::Pose2D;
 using wheelchair_ros::toPose2D;
 using wheelchair_ros::toPoseMsg;
+using Status = wheelchair_msgs::LocalizationStatus;
 
 namespace {
 
@@ -48,7 +49,7 @@ class KldSim : public ::testing::Test {
     pnh.param("scan_relay", relay_, false);
     truth_sub_ = nh_.subscribe("sim/ground_truth", 50, &KldSim::onTruth, this);
     pose_sub_ = nh_.subscribe("kld_pose", 50, &KldSim::onPose, this);
-    status_sub_ = nh_.subscribe("kld/localized", 50, &KldSim::onStatus, this);
+    status_sub_ = nh_.subscribe("localization/status", 50, &KldSim::onStatus, this);
     log_sub_ = nh_.subscribe("/rosout", 100, &KldSim::onLog, this);
     torque_pub_ = nh_.advertise<wheelchair_msgs::WheelTorques>("wheel_torques", 5);
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
@@ -59,9 +60,10 @@ class KldSim : public ::testing::Test {
     }
     map_ = wheelchair_ros::toOccupancyGrid(wheelchair_core::loadMap(world_), "map", ros::Time(0));
     map_pub_.publish(map_);
-    ASSERT_TRUE(waitFor([&] { return haveTruth() && !statusNow().empty(); }, 30.0))
+    ASSERT_TRUE(waitFor([&] { return haveTruth() && haveStatus(); }, 30.0))
         << "no ground truth or no localizer status";
-    ASSERT_TRUE(waitFor([&] { return statusNow() != "no map yet"; }, 20.0)) << "map not taken";
+    ASSERT_TRUE(waitFor([&] { return statusNow().state != Status::NO_DATA; }, 20.0))
+        << "map not taken: " << statusNow().detail;
     // Initial pose at the truth with a 10 cm / 3 deg prior, as from rviz.
     geometry_msgs::PoseWithCovarianceStamped init;
     init.header.frame_id = "map";
@@ -98,10 +100,10 @@ class KldSim : public ::testing::Test {
     std::lock_guard<std::mutex> lock(mutex_);
     poses_.push_back({m->header.stamp, toPose2D(m->pose.pose), 0, 0});
   }
-  void onStatus(const std_msgs::String::ConstPtr& m) {
+  void onStatus(const Status::ConstPtr& m) {
     std::lock_guard<std::mutex> lock(mutex_);
-    status_ = m->data;
-    statuses_.push_back(m->data);
+    status_ = *m;
+    states_.push_back(m->state);
   }
   void onLog(const rosgraph_msgs::Log::ConstPtr& m) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -130,9 +132,17 @@ class KldSim : public ::testing::Test {
     std::lock_guard<std::mutex> lock(mutex_);
     return truth_.back().pose;
   }
-  std::string statusNow() {
+  bool haveStatus() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return !states_.empty();
+  }
+  Status statusNow() {
     std::lock_guard<std::mutex> lock(mutex_);
     return status_;
+  }
+  bool localizedNow() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return !states_.empty() && status_.state == Status::LOCALIZED;
   }
   /// Truth nearest to `stamp` (published every simulator step).
   Pose2D truthAt(const ros::Time& stamp) {
@@ -214,8 +224,9 @@ class KldSim : public ::testing::Test {
   std::mutex mutex_;
   std::deque<Stamped> truth_;
   std::vector<Stamped> poses_;
-  std::string status_;
-  std::vector<std::string> statuses_, warnings_;
+  Status status_;
+  std::vector<uint8_t> states_;  ///< state of every status received
+  std::vector<std::string> warnings_;
   std::function<void(sensor_msgs::LaserScan&)> corrupt_;  ///< called under mutex_
   int relayed_ = 0;
   ros::Subscriber truth_sub_, pose_sub_, status_sub_, log_sub_, scan_sub_;
@@ -232,7 +243,7 @@ double rms(const std::vector<PoseError>& e, double PoseError::*field) {
 
 // Tracking along a living-room loop in the flat: position and heading RMS vs ground truth.
 TEST_F(KldSim, TracksTheFlatRoute) {
-  ASSERT_TRUE(waitFor([&] { return statusNow() == "localized" || poseCount() > 0; }, 20.0));
+  ASSERT_TRUE(waitFor([&] { return localizedNow() || poseCount() > 0; }, 20.0));
   const size_t from = poseCount();
   ASSERT_TRUE(driveRoute({kLivingRoomLoop.begin() + 1, kLivingRoomLoop.end()}))
       << "drive did not finish";
@@ -248,14 +259,14 @@ TEST_F(KldSim, TracksTheFlatRoute) {
   // towards the walls the 180-degree scan sees; 3.1 cm after.)
   EXPECT_LE(pos, 0.05);
   EXPECT_LE(head, 2 * M_PI / 180);
-  EXPECT_EQ(statusNow(), "localized");
+  EXPECT_TRUE(localizedNow()) << statusNow().detail;
 }
 
 // Kidnapping: /sim/teleport mid-route (odometry does not notice); the filter must report
 // "not localized" and then recover to within 20 cm while the chair drives on.
 TEST_F(KldSim, NoticesAndRecoversFromKidnapping) {
   ASSERT_TRUE(driveTo(kLivingRoomLoop[1]));
-  ASSERT_TRUE(waitFor([&] { return statusNow() == "localized"; }, 20.0)) << statusNow();
+  ASSERT_TRUE(waitFor([&] { return localizedNow(); }, 20.0)) << statusNow().detail;
   ros::ServiceClient teleport = nh_.serviceClient<wheelchair_sim::SetPose>("sim/teleport");
   ASSERT_TRUE(teleport.waitForExistence(ros::Duration(10.0)));
   wheelchair_sim::SetPose srv;
@@ -266,18 +277,18 @@ TEST_F(KldSim, NoticesAndRecoversFromKidnapping) {
   size_t seen;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    seen = statuses_.size();
+    seen = states_.size();
   }
   // Drive on up the hallway.
   bool noticed = false;
   driveTo(kHallwayNorth);
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    for (size_t i = seen; i < statuses_.size(); ++i) noticed |= statuses_[i] != "localized";
+    for (size_t i = seen; i < states_.size(); ++i) noticed |= states_[i] != Status::LOCALIZED;
   }
   EXPECT_TRUE(noticed) << "the kidnapping was never reported";
   // Recovered: localized and the last poses within 20 cm.
-  EXPECT_TRUE(waitFor([&] { return statusNow() == "localized"; }, 10.0)) << statusNow();
+  EXPECT_TRUE(waitFor([&] { return localizedNow(); }, 10.0)) << statusNow().detail;
   const size_t n = poseCount();
   ASSERT_GT(n, 5u);
   for (const auto& e : poseErrors(n - 3)) EXPECT_LT(e.xy, 0.2);
@@ -288,7 +299,7 @@ TEST_F(KldSim, NoticesAndRecoversFromKidnapping) {
 // estimate, a warning naming each reason.
 TEST_F(KldSim, SurvivesBadInputWithoutAJump) {
   ASSERT_TRUE(relay_);
-  ASSERT_TRUE(waitFor([&] { return statusNow() == "localized"; }, 20.0)) << statusNow();
+  ASSERT_TRUE(waitFor([&] { return localizedNow(); }, 20.0)) << statusNow().detail;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     corrupt_ = [this](sensor_msgs::LaserScan& s) {

@@ -165,6 +165,48 @@ OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg) {
   return map;
 }
 
+wheelchair_msgs::LocalizationStatus toLocalizationStatusMsg(
+    const wheelchair_core::LocalizationStatus& status, const ros::Time& stamp) {
+  using State = wheelchair_core::LocalizationState;
+  using Msg = wheelchair_msgs::LocalizationStatus;
+  Msg m;
+  m.header.stamp = stamp;
+  switch (status.state) {
+    case State::kUninitialized:
+      m.state = Msg::UNINITIALIZED;
+      break;
+    case State::kLocalizing:
+      m.state = Msg::LOCALIZING;
+      break;
+    case State::kLocalized:
+      m.state = Msg::LOCALIZED;
+      break;
+    case State::kAmbiguous:
+      m.state = Msg::AMBIGUOUS;
+      break;
+    case State::kUncertain:
+      m.state = Msg::UNCERTAIN;
+      break;
+    case State::kMisfit:
+      m.state = Msg::MISFIT;
+      break;
+    case State::kNoData:
+      m.state = Msg::NO_DATA;
+      break;
+  }
+  m.localized = status.localized();
+  m.sentence = wheelchair_core::riderSentence(status.state);
+  m.detail = status.detail;
+  m.position_std = status.position_std;
+  m.heading_std = status.heading_std;
+  m.inlier_fraction = status.inlier_fraction;
+  m.mean_fit = status.mean_fit;
+  m.hypotheses = status.hypotheses;
+  m.best_weight = status.best_weight;
+  m.particles = status.particles;
+  return m;
+}
+
 nav_msgs::Path toPathMsg(const std::vector<Pose2D>& poses, const std::string& frame_id,
                          const ros::Time& stamp) {
   nav_msgs::Path path;

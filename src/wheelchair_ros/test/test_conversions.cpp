@@ -2,6 +2,8 @@
 #include <wheelchair_ros/conversions.h>
 
 #include <cmath>
+#include <set>
+#include <string>
 
 namespace wheelchair_ros {
 namespace {
@@ -104,6 +106,35 @@ TEST(RosConversions, AnEstimateAndACloudKeepTheirPosesAndCovariance) {
   EXPECT_EQ(cloud.header.frame_id, "map");
   EXPECT_EQ(cloud.header.stamp, ros::Time(2.0));
   EXPECT_NEAR(toPose2D(cloud.poses[1]).yaw, -2.0, 1e-12);
+}
+
+TEST(RosConversions, ALocalizationStatusKeepsItsStateNumbersAndReason) {
+  wheelchair_core::LocalizationStatus status;
+  status.state = wheelchair_core::LocalizationState::kAmbiguous;
+  status.detail = "ambiguous: 2 pose hypotheses (best holds 60 % of the weight)";
+  status.hypotheses = 2;
+  status.best_weight = 0.6;
+  status.particles = 1234;
+  const auto m = toLocalizationStatusMsg(status, ros::Time(5.0));
+  EXPECT_EQ(m.state, wheelchair_msgs::LocalizationStatus::AMBIGUOUS);
+  EXPECT_FALSE(m.localized);
+  EXPECT_EQ(m.detail, status.detail);
+  EXPECT_FALSE(m.sentence.empty());
+  EXPECT_EQ(m.sentence.find("hypotheses"), std::string::npos) << "no technical words for the rider";
+  EXPECT_EQ(m.hypotheses, 2);
+  EXPECT_EQ(m.particles, 1234);
+  EXPECT_TRUE(std::isnan(m.position_std));
+  EXPECT_EQ(m.header.stamp, ros::Time(5.0));
+  status.state = wheelchair_core::LocalizationState::kLocalized;
+  const auto ok = toLocalizationStatusMsg(status, ros::Time(6.0));
+  EXPECT_EQ(ok.state, wheelchair_msgs::LocalizationStatus::LOCALIZED);
+  EXPECT_TRUE(ok.localized);
+  // Every state has its own sentence.
+  std::set<std::string> sentences;
+  for (int s = 0; s <= static_cast<int>(wheelchair_core::LocalizationState::kNoData); ++s)
+    sentences.insert(
+        wheelchair_core::riderSentence(static_cast<wheelchair_core::LocalizationState>(s)));
+  EXPECT_EQ(sentences.size(), 7u);
 }
 
 TEST(RosConversions, AnUpsideDownLaserIsRecognized) {

@@ -5,6 +5,7 @@
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <wheelchair_core/laser_scan.h>
+#include <wheelchair_core/localization_status.h>
 #include <wheelchair_core/pose2d.h>
 #include <wheelchair_kld/kld_params.h>
 #include <wheelchair_kld/localization_map.h>
@@ -21,11 +22,6 @@
 #include <vector>
 
 namespace wheelchair_kld {
-
-struct LocalizationStatus {
-  bool localized = false;
-  std::string reason;  ///< why not localized ("" when localized)
-};
 
 enum class UpdateResult { kUpdated, kNoMotion, kRejected, kNotInitialized };
 
@@ -51,8 +47,9 @@ class KldLocalizer {
   /// Every particle's pose (base_link in the map frame).
   std::vector<wheelchair_core::Pose2D> particlePoses() const;
   const PoseEstimate& estimate() const { return estimate_; }
-  /// Whether the estimate can be trusted: localized, or why not ("" / the reason).
-  LocalizationStatus status() const;
+  /// Whether the estimate can be trusted: the state, the numbers behind it and, when not
+  /// localized, the reason with its numbers.
+  wheelchair_core::LocalizationStatus status() const;
   const std::string& lastRejection() const { return last_rejection_; }
   /// Number of beams the scan must have (0: any); set from the first scan otherwise.
   void setExpectedBeams(int n) { expected_beams_ = n; }

@@ -35,7 +35,7 @@ std::vector<StepRecord> runDrive(KldLocalizer& localizer, const std::vector<Driv
     r.error_xy = std::hypot(e.x - s.truth.x, e.y - s.truth.y);
     r.error_theta = std::abs(wheelchair_core::angleDifference(e.yaw, s.truth.yaw));
     r.particles = static_cast<int>(localizer.particleCount());
-    r.localized = localizer.status().localized;
+    r.localized = localizer.status().localized();
     out.push_back(r);
   }
   return out;

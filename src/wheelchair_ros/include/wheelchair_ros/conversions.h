@@ -13,8 +13,10 @@
 #include <ros/time.h>
 #include <sensor_msgs/LaserScan.h>
 #include <wheelchair_core/laser_scan.h>
+#include <wheelchair_core/localization_status.h>
 #include <wheelchair_core/occupancy_map.h>
 #include <wheelchair_core/pose2d.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
 
 #include <Eigen/Core>
 
@@ -66,6 +68,10 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const wheelchair_core::OccupancyMap& map
 /// Throws std::invalid_argument when the message's data size differs from width x height, the
 /// resolution is not finite and positive, or the origin is not finite.
 wheelchair_core::OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg);
+
+/// The localizer's verdict with the rider's sentence of its state (wheelchair_core::riderSentence).
+wheelchair_msgs::LocalizationStatus toLocalizationStatusMsg(
+    const wheelchair_core::LocalizationStatus& status, const ros::Time& stamp);
 
 nav_msgs::Path toPathMsg(const std::vector<wheelchair_core::Pose2D>& poses,
                          const std::string& frame_id, const ros::Time& stamp);
