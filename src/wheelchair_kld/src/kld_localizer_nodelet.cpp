@@ -19,6 +19,7 @@
 #include <wheelchair_mapping/mrpt_conversions.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/parameters.h>
 #include <wheelchair_ros/shared_tf.h>
 #include <pluginlib/class_list_macros.hpp>
 
@@ -29,46 +30,13 @@
 #include <sstream>
 #include <string>
 
+#include "localizer_node_config.h"
+
 namespace wheelchair_kld {
 
 using wheelchair_core::LocalizationState;
 using wheelchair_core::LocalizationStatus;
 using wheelchair_core::Pose2D;
-
-namespace {
-KldParams loadParams(const ros::NodeHandle& pnh) {
-  KldParams p;
-  pnh.param("kld_epsilon", p.epsilon, p.epsilon);
-  pnh.param("kld_delta", p.delta, p.delta);
-  pnh.param("bin_xy", p.bin_xy, p.bin_xy);
-  pnh.param("bin_theta", p.bin_theta, p.bin_theta);
-  pnh.param("min_particles", p.min_particles, p.min_particles);
-  pnh.param("max_particles", p.max_particles, p.max_particles);
-  pnh.param("global_particles", p.global_particles, p.global_particles);
-  pnh.param("init_particles", p.init_particles, p.init_particles);
-  pnh.param("fixed_particles", p.fixed_particles, p.fixed_particles);
-  pnh.param("update_min_d", p.update_min_d, p.update_min_d);
-  pnh.param("update_min_a", p.update_min_a, p.update_min_a);
-  pnh.param("recovery_alpha_slow", p.alpha_slow, p.alpha_slow);
-  pnh.param("recovery_alpha_fast", p.alpha_fast, p.alpha_fast);
-  pnh.param("odom_alpha1", p.motion.alpha1, p.motion.alpha1);
-  pnh.param("odom_alpha2", p.motion.alpha2, p.motion.alpha2);
-  pnh.param("odom_alpha3", p.motion.alpha3, p.motion.alpha3);
-  pnh.param("odom_alpha4", p.motion.alpha4, p.motion.alpha4);
-  std::string model = "likelihood_field";
-  pnh.param("laser_model_type", model, model);
-  p.measurement.type =
-      model == "beam" ? MeasurementModelType::kBeam : MeasurementModelType::kLikelihoodField;
-  pnh.param("laser_beam_step", p.measurement.beam_step, p.measurement.beam_step);
-  pnh.param("laser_sigma_hit", p.measurement.sigma_hit, p.measurement.sigma_hit);
-  pnh.param("laser_z_hit", p.measurement.z_hit, p.measurement.z_hit);
-  pnh.param("laser_z_rand", p.measurement.z_rand, p.measurement.z_rand);
-  pnh.param("laser_max_range", p.measurement.max_range, p.measurement.max_range);
-  pnh.param("laser_likelihood_exponent", p.measurement.likelihood_exponent,
-            p.measurement.likelihood_exponent);
-  return p;
-}
-}  // namespace
 
 class KldLocalizerNodelet : public nodelet::Nodelet {
  private:
@@ -77,19 +45,9 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     // still runs: they wait until everything, last_status_ included, is set up.
     std::lock_guard<std::mutex> lock(mutex_);
     ros::NodeHandle& nh = getNodeHandle();
-    ros::NodeHandle& pnh = getPrivateNodeHandle();
-    params_ = loadParams(pnh);
-    pnh.param("global_frame", map_frame_, map_frame_);
-    pnh.param("odom_frame", odom_frame_, odom_frame_);
-    pnh.param("base_frame", base_frame_, base_frame_);
-    pnh.param("transform_tolerance", transform_tolerance_, transform_tolerance_);
-    pnh.param("expected_beams", expected_beams_, expected_beams_);
-    pnh.param("global_localization_on_start", global_on_start_, global_on_start_);
-    pnh.param("scan_queue_size", scan_queue_size_, scan_queue_size_);
-    pnh.param("tf_timeout", tf_timeout_, tf_timeout_);
-    int seed = 1;
-    pnh.param("seed", seed, seed);
-    seed_ = static_cast<uint64_t>(seed);
+    config_ = wheelchair_ros::loadParameters<LocalizerNodeConfig>(getPrivateNodeHandle(),
+                                                                  readLocalizerNodeConfig);
+    global_on_start_ = config_.global_localization_on_start;
     tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
     pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("kld_pose", 5, true);
     cloud_pub_ = nh.advertise<geometry_msgs::PoseArray>("particlecloud", 2, true);
@@ -102,7 +60,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     scan_sub_.subscribe(nh, "scan", 5);
     scan_sub_.registerCallback(&KldLocalizerNodelet::onScanArrived, this);
     scan_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::LaserScan>>(
-        scan_sub_, *tf_buffer_, odom_frame_, static_cast<uint32_t>(std::max(1, scan_queue_size_)),
+        scan_sub_, *tf_buffer_, config_.odom_frame, static_cast<uint32_t>(config_.scan_queue_size),
         nh);
     scan_filter_->registerCallback(&KldLocalizerNodelet::onScan, this);
     scan_filter_->registerFailureCallback(
@@ -122,7 +80,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     try {
       map = std::make_shared<LocalizationMap>(
           wheelchair_mapping::toMrptGrid(wheelchair_ros::fromOccupancyGrid(*msg)),
-          params_.measurement.max_distance);
+          config_.filter.measurement.max_distance);
     } catch (const std::exception& e) {
       NODELET_ERROR("kld: map rejected: %s", e.what());
       return;
@@ -133,8 +91,8 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     if (had)
       NODELET_WARN("kld: new map (%ux%u cells); %s", msg->info.width, msg->info.height,
                    keep ? "keeping the current estimate" : "not localized: waiting for a pose");
-    localizer_ = std::make_unique<KldLocalizer>(map, params_, seed_);
-    localizer_->setExpectedBeams(expected_beams_);
+    localizer_ = std::make_unique<KldLocalizer>(map, config_.filter, config_.seed);
+    localizer_->setExpectedBeams(config_.expected_beams);
     if (keep) {
       localizer_->initGaussian(keep->mean, keep->cov);
     } else if (pending_init_) {
@@ -148,9 +106,9 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
 
   void onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!msg->header.frame_id.empty() && msg->header.frame_id != map_frame_) {
+    if (!msg->header.frame_id.empty() && msg->header.frame_id != config_.map_frame) {
       NODELET_WARN("kld: initial pose in frame '%s' ignored (expected '%s')",
-                   msg->header.frame_id.c_str(), map_frame_.c_str());
+                   msg->header.frame_id.c_str(), config_.map_frame.c_str());
       return;
     }
     const Pose2D pose = wheelchair_ros::toPose2D(msg->pose.pose);
@@ -192,10 +150,10 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     if (!tf_buffer_->_frameExists(msg->header.frame_id))
       warnThrottled("tf frame",
                     "kld: scan skipped, tf missing: unknown frame '" + msg->header.frame_id + "'");
-    if ((now - last_tf_ok_).toSec() > tf_timeout_) {
+    if ((now - last_tf_ok_).toSec() > config_.tf_timeout) {
       std::ostringstream why;
-      why << "tf missing: no " << odom_frame_ << " -> " << base_frame_
-          << " transform at the scan times for more than " << tf_timeout_ << " s";
+      why << "tf missing: no " << config_.odom_frame << " -> " << config_.base_frame
+          << " transform at the scan times for more than " << config_.tf_timeout << " s";
       publishStatus(noData(why.str()));
     }
   }
@@ -205,8 +163,8 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
                      tf2_ros::filter_failure_reasons::FilterFailureReason reason) {
     std::lock_guard<std::mutex> lock(mutex_);
     std::ostringstream text;
-    text << "kld: scan skipped, tf missing: no " << odom_frame_ << " -> '" << msg->header.frame_id
-         << "' transform at its stamp "
+    text << "kld: scan skipped, tf missing: no " << config_.odom_frame << " -> '"
+         << msg->header.frame_id << "' transform at its stamp "
          << (reason == tf2_ros::filter_failure_reasons::OutTheBack ? "(older than the tf buffer)"
                                                                    : "(scan queue full)");
     warnThrottled("tf dropped", text.str());
@@ -227,9 +185,11 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     wheelchair_core::LaserScan2D scan = wheelchair_ros::fromLaserScanMsg(*msg);
     try {
       odom = wheelchair_ros::toPose2D(
-          tf_buffer_->lookupTransform(odom_frame_, base_frame_, msg->header.stamp).transform);
+          tf_buffer_->lookupTransform(config_.odom_frame, config_.base_frame, msg->header.stamp)
+              .transform);
       const auto mount =
-          tf_buffer_->lookupTransform(base_frame_, msg->header.frame_id, ros::Time(0)).transform;
+          tf_buffer_->lookupTransform(config_.base_frame, msg->header.frame_id, ros::Time(0))
+              .transform;
       if (wheelchair_ros::laserPose2D(mount, laser)) wheelchair_core::mirrorScanAngles(scan);
     } catch (const tf2::TransformException& e) {
       warnThrottled("tf", std::string("kld: scan skipped, tf missing: ") + e.what());
@@ -254,12 +214,12 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   void publishEstimate(const ros::Time& stamp) {
     geometry_msgs::PoseWithCovarianceStamped pose;
     pose.header.stamp = stamp;
-    pose.header.frame_id = map_frame_;
+    pose.header.frame_id = config_.map_frame;
     pose.pose = wheelchair_ros::toPoseWithCovarianceMsg(localizer_->estimate().mean,
                                                         localizer_->estimate().cov);
     pose_pub_.publish(pose);
     cloud_pub_.publish(
-        wheelchair_ros::toPoseArrayMsg(localizer_->particlePoses(), map_frame_, stamp));
+        wheelchair_ros::toPoseArrayMsg(localizer_->particlePoses(), config_.map_frame, stamp));
     std_msgs::Int32 count;
     count.data = static_cast<int>(localizer_->particleCount());
     count_pub_.publish(count);
@@ -269,9 +229,9 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   /// future-dated by the transform tolerance (REP-105).
   void publishMapToOdom(const ros::Time& stamp, const Pose2D& odom) {
     geometry_msgs::TransformStamped t;
-    t.header.stamp = stamp + ros::Duration(transform_tolerance_);
-    t.header.frame_id = map_frame_;
-    t.child_frame_id = odom_frame_;
+    t.header.stamp = stamp + ros::Duration(config_.transform_tolerance);
+    t.header.frame_id = config_.map_frame;
+    t.child_frame_id = config_.odom_frame;
     t.transform = wheelchair_ros::toTransformMsg(
         wheelchair_core::compose(localizer_->estimate().mean, wheelchair_core::inverse(odom)));
     tf_broadcaster_.sendTransform(t);
@@ -312,15 +272,9 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     legacy_status_pub_.publish(legacy);
   }
 
-  KldParams params_;
-  std::string map_frame_ = "map", odom_frame_ = "odom", base_frame_ = "base_link";
-  double transform_tolerance_ = 0.1;
-  int expected_beams_ = 0;
-  int scan_queue_size_ = 5;  ///< scans waiting for odometry (0.5 s of lag at 10 Hz)
-  double tf_timeout_ = 0.5;  ///< no usable scan for this long while scans arrive: not localized
+  LocalizerNodeConfig config_;
   ros::Time last_tf_ok_, last_scan_stamp_;
-  bool global_on_start_ = false;
-  uint64_t seed_ = 1;
+  bool global_on_start_ = false;  ///< from the config, or asked for before the map came
   std::mutex mutex_;
   std::unique_ptr<KldLocalizer> localizer_;
   std::optional<std::pair<Pose2D, Eigen::Matrix3d>> pending_init_;

@@ -12,7 +12,10 @@
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
 
+#include <sys/wait.h>
+
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -176,6 +179,25 @@ TEST_F(KldLocalizerNode, ToleratesOdometryLagButReportsATfOutage) {
 
   for (const size_t end = i + 10; i < end;) step(true);
   EXPECT_TRUE(localized()) << "no recovery after the tf outage: " << status().detail;
+}
+
+// The nodelet's one loader refuses an old or misspelt parameter: `rosrun` exits 1 naming it.
+TEST(KldLocalizerParams, AnOldOrUnknownParameterRefusesTheNode) {
+  auto run = [](const std::string& args, std::string& output) {
+    FILE* pipe = popen(
+        ("rosrun wheelchair_kld kld_localizer __name:=refused " + args + " 2>&1").c_str(), "r");
+    char buf[512];
+    while (pipe && fgets(buf, sizeof buf, pipe)) output += buf;
+    const int status = pipe ? pclose(pipe) : -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  std::string old_name, misspelt;
+  EXPECT_EQ(run("_global_frame:=map", old_name), 1) << old_name;
+  EXPECT_NE(old_name.find("'global_frame' is now called 'map_frame'"), std::string::npos)
+      << old_name;
+  ros::param::del("/refused");
+  EXPECT_EQ(run("_fit_mean:=0.5", misspelt), 1) << misspelt;
+  EXPECT_NE(misspelt.find("unknown parameter 'fit_mean'"), std::string::npos) << misspelt;
 }
 
 int main(int argc, char** argv) {

@@ -72,6 +72,25 @@ TEST(MapServerNode, BadMapFileParameterExitsWithOneFatalLine) {
   EXPECT_NE(output.find(missing + ": map file not found"), std::string::npos) << output;
 }
 
+// The old name of the frame parameter refuses the node, naming the new one.
+TEST(MapServerNode, TheOldFrameParameterNameExitsNamingTheNewOne) {
+  wheelchair_core::test::TempDir dir;
+  wheelchair_core::test::writePgm(dir.file("tiny.pgm"), 1, 1, {254});
+  wheelchair_core::test::writeText(dir.file("tiny.yaml"),
+                                   wheelchair_core::test::mapYaml("tiny.pgm", "0.1"));
+  FILE* pipe = popen(("rosrun wheelchair_mapping map_server __name:=old_frame_map_server " +
+                      dir.file("tiny.yaml") + " _frame_id:=map 2>&1")
+                         .c_str(),
+                     "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buf[512];
+  while (fgets(buf, sizeof buf, pipe)) output += buf;
+  const int status = pclose(pipe);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << output;
+  EXPECT_NE(output.find("'frame_id' is now called 'map_frame'"), std::string::npos) << output;
+}
+
 }  // namespace
 }  // namespace wheelchair_mapping
 
