@@ -23,7 +23,6 @@
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
-#include <tf2/utils.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 #include <wheelchair_core/map_io.h>
@@ -116,8 +115,7 @@ class SimDrive {
 
  private:
   void onTruth(const nav_msgs::Odometry::ConstPtr& m) {
-    const wheelchair_core::Pose2D p{m->pose.pose.position.x, m->pose.pose.position.y,
-                                    tf2::getYaw(m->pose.pose.orientation)};
+    const wheelchair_core::Pose2D p = wheelchair_ros::toPose2D(m->pose.pose);
     if (first_truth_.isZero()) first_truth_ = m->header.stamp;
     truth_[m->header.stamp] = p;
     while (truth_.size() > 400) truth_.erase(truth_.begin());
