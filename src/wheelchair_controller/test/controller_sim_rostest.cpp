@@ -11,6 +11,7 @@
 // doorway (the flat paths through 90 cm doorways: the body's deviation inside the doorway).
 #include <wheelchair_controller/test_paths.h>
 #include <wheelchair_description/chair_params.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/TransformStamped.h>
@@ -81,8 +82,7 @@ class SimHarness {
  public:
   SimHarness() {
     ros::NodeHandle nh;
-    chair_ =
-        wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath());
+    chair_ = wheelchair_description::test::shippedChair();
     truth_sub_ = nh.subscribe("sim/ground_truth", 200, &SimHarness::onTruth, this);
     ref_sub_ = nh.subscribe("controller/reference", 200, &SimHarness::onReference, this);
     status_sub_ = nh.subscribe("controller/status", 20, &SimHarness::onStatus, this);

@@ -1,5 +1,6 @@
 // rostest: what description_publisher puts on the parameter server and on tf.
 #include <wheelchair_description/chair_params.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -43,7 +44,7 @@ TEST(DescriptionPublisher, RobotDescriptionIsSetAndParses) {
 }
 
 TEST(DescriptionPublisher, LaserMountArrivesOnTf) {
-  const ChairParams p = loadChairParams(defaultChairParamsPath());
+  const ChairParams p = test::shippedChair();
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
   const auto laser = waitForTransform(buffer, "base_link", "laser");
@@ -59,7 +60,7 @@ TEST(DescriptionPublisher, LaserMountArrivesOnTf) {
 }
 
 TEST(DescriptionPublisher, WheelsStartAtZeroAndFollowJointStates) {
-  const ChairParams p = loadChairParams(defaultChairParamsPath());
+  const ChairParams p = test::shippedChair();
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
   const auto at_rest = waitForTransform(buffer, "base_link", "left_wheel");

@@ -14,8 +14,7 @@ FootprintPlanningParams footprintPlanningParams(const ParameterMap& params,
     p.footprint = parseFootprint(text);
   } else {
     for (const auto& v :
-         wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath())
-             .footprint)
+         wheelchair_description::loadChairParams(WHEELCHAIR_PLANNER_DEFAULT_CHAIR_FILE).footprint)
       p.footprint.push_back({v.x(), v.y()});
   }
   p.repair = getParam(params, "footprint_repair", p.repair);

@@ -1,7 +1,7 @@
 // Planner host: loads a GlobalPlanner plugin by name, plans from tf map->base_link to goals from
 // rviz (/move_base_simple/goal) and the ~make_plan service, publishes /plan and
 // /plan_certificate, and replans when /map changes.
-#include <wheelchair_description/chair_params.h>
+#include <wheelchair_description/chair_file.h>
 #include <wheelchair_harmonic_planner/footprint.h>
 #include <wheelchair_harmonic_planner/global_planner.h>
 #include <wheelchair_msgs/MakePlan.h>
@@ -120,7 +120,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     if (params_.count("inscribed_radius") == 0 || params_.count("footprint") == 0) {
       std::string chair_file;
       pnh.param<std::string>("chair_params", chair_file,
-                             wheelchair_description::defaultChairParamsPath());
+                             wheelchair_description::defaultChairFile());
       const auto chair = wheelchair_description::loadChairParams(chair_file);
       if (params_.count("inscribed_radius") == 0)
         params_["inscribed_radius"] = std::to_string(chair.inscribedRadius());

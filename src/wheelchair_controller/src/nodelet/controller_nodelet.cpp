@@ -1,6 +1,6 @@
 #include <wheelchair_controller/controller_nodelet.h>
 #include <wheelchair_controller/wheel_speed_estimator.h>
-#include <wheelchair_description/package_paths.h>
+#include <wheelchair_description/chair_file.h>
 
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/Vector3Stamped.h>
@@ -56,7 +56,7 @@ void ControllerNodelet::onInit() {
   ros::NodeHandle& nh = getNodeHandle();
   ros::NodeHandle& pnh = getPrivateNodeHandle();
   chair_ = wheelchair_description::loadChairParams(
-      pnh.param("chair_params", wheelchair_description::chairParamsPathFromRos()));
+      pnh.param("chair_params", wheelchair_description::defaultChairFile()));
   TrackerConfig cfg;
   pnh.param("natural_frequency", cfg.natural_frequency, cfg.natural_frequency);
   pnh.param("damping", cfg.damping, cfg.damping);
