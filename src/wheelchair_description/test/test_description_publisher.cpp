@@ -5,11 +5,10 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
-#include <tf2/LinearMath/Matrix3x3.h>
-#include <tf2/LinearMath/Quaternion.h>
 #include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/transform_listener.h>
 #include <urdf/model.h>
+#include <wheelchair_ros/conversions.h>
 
 #include <atomic>
 #include <cmath>
@@ -21,12 +20,6 @@ namespace {
 geometry_msgs::TransformStamped waitForTransform(tf2_ros::Buffer& buffer, const std::string& parent,
                                                  const std::string& child) {
   return buffer.lookupTransform(parent, child, ros::Time(0), ros::Duration(15.0));
-}
-
-double yawOf(const geometry_msgs::Quaternion& q) {
-  double roll, pitch, yaw;
-  tf2::Matrix3x3(tf2::Quaternion(q.x, q.y, q.z, q.w)).getRPY(roll, pitch, yaw);
-  return yaw;
 }
 
 }  // namespace
@@ -51,7 +44,7 @@ TEST(DescriptionPublisher, LaserMountArrivesOnTf) {
   EXPECT_NEAR(laser.transform.translation.x, p.laser_x, 1e-9);
   EXPECT_NEAR(laser.transform.translation.y, p.laser_y, 1e-9);
   EXPECT_NEAR(laser.transform.translation.z, p.laser_z, 1e-9);
-  EXPECT_NEAR(yawOf(laser.transform.rotation), p.laser_yaw, 1e-9);
+  EXPECT_NEAR(wheelchair_ros::yawOf(laser.transform.rotation), p.laser_yaw, 1e-9);
   const auto base = waitForTransform(buffer, "base_footprint", "base_link");
   EXPECT_NEAR(base.transform.translation.z, p.wheel_radius, 1e-9);
   // The whole chair, floor to sensor, in one tree.

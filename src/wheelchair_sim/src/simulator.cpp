@@ -54,7 +54,7 @@ void Simulator::integrate(double h) {
 
 // Each wheel's contact point slips by a random distance whose variance grows with the
 // distance it rolled (sigma^2 = slip_noise^2 * r |dpsi|): the body moves as if the wheel had
-// turned a little more or less than the encoder says.
+// turned a little more or less than the encoder says (eq. 10-11 of the two slips).
 void Simulator::addSlip(const Eigen::Vector2d& wheel_increment) {
   std::normal_distribution<double> normal(0.0, 1.0);
   Eigen::Vector2d slip;
@@ -62,11 +62,8 @@ void Simulator::addSlip(const Eigen::Vector2d& wheel_increment) {
     const double rolled = chair_.wheel_radius * std::abs(wheel_increment(i));
     slip(i) = params_.slip_noise * std::sqrt(rolled) * normal(rng_);
   }
-  core::Pose2D p = pose();
-  const double forward = 0.5 * (slip(0) + slip(1));
-  p.yaw += 0.5 * (slip(0) - slip(1)) / chair_.half_track;
-  p.x += forward * std::cos(p.yaw);
-  p.y += forward * std::sin(p.yaw);
+  const core::Pose2D p =
+      core::integrateArc(pose(), core::bodyMotion(slip(0), slip(1), chair_.half_track));
   const wd::State moved = wd::stateAtAxlePose(p.x, p.y, p.yaw, chair_);
   x_.head<3>() = moved.head<3>();
 }

@@ -11,6 +11,7 @@
 #include <std_msgs/Bool.h>
 #include <wheelchair_description_testing/chair_file.h>
 #include <wheelchair_msgs/WheelTorques.h>
+#include <wheelchair_ros/conversions.h>
 
 #include <atomic>
 #include <cmath>
@@ -184,8 +185,7 @@ TEST_F(SimNode, TeleportMovesTheTruthNotTheOdometryAndResetRestartsOdometry) {
   ASSERT_TRUE(waitForFreshState());
   EXPECT_NEAR(truth().pose.pose.position.x, 3.0, 1e-9);
   EXPECT_NEAR(truth().pose.pose.position.y, 1.0, 1e-9);
-  EXPECT_NEAR(2.0 * std::atan2(truth().pose.pose.orientation.z, truth().pose.pose.orientation.w),
-              1.0, 1e-9);
+  EXPECT_NEAR(wheelchair_ros::yawOf(truth().pose.pose.orientation), 1.0, 1e-9);
   EXPECT_NEAR(latest_.odom.pose.pose.position.x, 0.0, 1e-9) << "odometry must not see a kidnap";
 
   srv.request.x = kFrontWall;  // inside the wall
