@@ -58,8 +58,6 @@ class SimulatorNodelet : public nodelet::Nodelet {
       settings_ = loadSettings(pnh);
       chair_sim_ =
           std::make_unique<SimulatedChair>(chair_, settings_.sim, loadWorld(settings_.world));
-      for (const Disc& disc : obstaclesParameter(pnh))
-        chair_sim_->simulator().obstacles().add(disc);  // throws on bad values
     } catch (const std::exception& e) {
       NODELET_FATAL("simulator cannot start: %s", e.what());
       throw;
@@ -69,6 +67,13 @@ class SimulatorNodelet : public nodelet::Nodelet {
       NODELET_FATAL("initial pose (%.2f, %.2f, %.2f) collides with %s", start.x, start.y, start.yaw,
                     settings_.world.c_str());
       throw std::runtime_error("initial pose collides");
+    }
+    try {
+      for (const Disc& disc : obstaclesParameter(pnh))
+        chair_sim_->simulator().obstacles().add(disc);  // throws on bad values
+    } catch (const std::exception& e) {
+      NODELET_FATAL("simulator cannot start: ~obstacles: %s", e.what());
+      throw;
     }
     if (!settings_.motor_bus.empty()) startMotorController();
 
