@@ -18,8 +18,8 @@ using wheelchair_planner::PlannerSettings;
 
 /// The plugin's own keys.
 struct HarmonicPlannerConfig {
-  std::string solver = "direct";  ///< "direct" (LDL^T, log-space solves) or "sor"
-  HarmonicSolverParams solver_params;
+  std::string solver = "direct";       ///< "direct" (LDL^T, log-space solves) or "sor"
+  HarmonicSolverParams solver_params;  ///< its `method` is set from `solver` by configure()
   /// Factor a new map in setMap() unless a goal is tracked (see HarmonicPlanner).
   bool prepare_on_map = true;
 
