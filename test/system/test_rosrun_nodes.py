@@ -20,7 +20,7 @@ NODES = [
     ("wheelchair_mapping", "mapping", [], ["/mapping"]),
     ("wheelchair_description", "description_publisher", [], ["/description_publisher"]),
     ("wheelchair_kld", "kld_localizer", [], ["/kld_localizer"]),
-    ("wheelchair_harmonic_planner", "planner_host", [], ["/planner_host"]),
+    ("wheelchair_planner", "planner_host", [], ["/planner_host"]),
     ("wheelchair_controller", "controller", [], ["/controller"]),
     ("wheelchair_base_driver", "base_driver", ["_transport:=fake"], ["/base_driver"]),
     ("wheelchair_sim", "simulator", [f"_world:={WORLDS}/flat.yaml", "_initial_x:=3.0",
