@@ -96,11 +96,11 @@ def run_protocol(args, out, logs):
         pairs = [p for p in pairs if p["index"] in args.pairs]
     procs = Processes(logs)
     records = []
-    chair_config = None
+    bringup_copy = None
     try:
         start_master(procs, rosout=True, use_sim_time=True, export=True)
-        chair_config = table2_stack.start(
-            procs, args.chair_config or table2_stack.default_config(),
+        bringup_copy = table2_stack.start(
+            procs, args.bringup or table2_stack.default_config(),
             ROOT / "test" / "worlds" / "flat.yaml", args.speed, pairs[0]["start"], args.nice)
         rospy.init_node("table2_report", disable_signals=True)
         runner = protocol.Table2Runner(wall_scale=args.wall_scale)
@@ -133,8 +133,8 @@ def run_protocol(args, out, logs):
             records.append(record)
     finally:
         procs.stop_all()
-        if chair_config is not None:
-            os.unlink(chair_config)
+        if bringup_copy is not None:
+            os.unlink(bringup_copy)
     return world, records
 
 
@@ -175,7 +175,7 @@ def main():
                         help="niceness of simulator and chair (deploy/wheelchair.service: -5)")
     parser.add_argument("--wall-scale", type=float, default=1.0,
                         help="multiplies every wall-clock timeout (loaded machine)")
-    parser.add_argument("--chair-config", help="bring-up file (default: chair_sim.yaml)")
+    parser.add_argument("--bringup", help="bring-up file (default: chair_sim.yaml)")
     parser.add_argument("--no-snapshots", dest="snapshots", action="store_false")
     parser.add_argument("--no-kld-bench", dest="kld_bench", action="store_false")
     parser.add_argument("--kld-bench-timeout", type=float, default=2400.0)

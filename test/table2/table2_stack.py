@@ -37,7 +37,7 @@ def default_config():
     return os.path.join(HERE, "chair_table2.yaml")
 
 
-def chair_config(path, driver_port, sim_port):
+def bringup_for_run(path, driver_port, sim_port):
     """The bring-up file with the driver on UDP (driver_port -> sim_port) and sim time."""
     with open(path) as f:
         config = yaml.safe_load(f)
@@ -56,8 +56,8 @@ def start(processes, config_path, world, speed, initial, nice):
     returns the copy of the bring-up file they run (the caller removes it)."""
     driver_port, sim_port = free_udp_ports(2)
     tmp = tempfile.NamedTemporaryFile("w", suffix=".yaml", prefix="table2_chair_", delete=False)
-    chair_config_data = chair_config(config_path, driver_port, sim_port)
-    yaml.safe_dump(chair_config_data, tmp)
+    bringup = bringup_for_run(config_path, driver_port, sim_port)
+    yaml.safe_dump(bringup, tmp)
     tmp.close()
     print("table2_stack: chair %s, UDP driver %d <-> sim %d, speed %.1f" %
           (config_path, driver_port, sim_port, speed), flush=True)
@@ -66,7 +66,7 @@ def start(processes, config_path, world, speed, initial, nice):
     time.sleep(0.5)  # the simulator owns /clock: let it come up first
     # the manager's threads: a scan update may wait 100 ms for tf while the driver and the
     # controller must keep running (chair_sim.yaml's num_worker_threads; 8 if it has none)
-    threads = int(chair_config_data.get("num_worker_threads", 8))
+    threads = int(bringup.get("num_worker_threads", 8))
     stack.chair(processes, tmp.name, name="chair", overrides={"num_worker_threads": threads},
                 options={"nice": nice})
     print("table2_stack: simulator and chair at nice %s" %
