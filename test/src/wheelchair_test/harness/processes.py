@@ -2,7 +2,8 @@
 log, checked while the run goes on, and all stopped and reaped at the end.
 
 Stopping a process: SIGINT to its group first (roscpp and rospy nodes shut down cleanly and
-unregister from the master), then SIGTERM, then SIGKILL, `grace` seconds apart. The master is
+unregister from the master), then SIGTERM, then SIGKILL, `grace` seconds apart, until no member
+of the group is left. The master is
 started with interrupt=False: rosmaster may ignore SIGINT (ROS_ON_DEBIAN.md), so it gets SIGTERM
 first. Processes are stopped newest first, so the master (started first) goes last.
 """
@@ -159,20 +160,35 @@ class Processes:
         self.stop_all()
 
 
+def _group_alive(pgid):
+    try:
+        os.killpg(pgid, 0)
+        return True
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+
+
 def _stop(started):
+    """Signals the process group until no member is left (a child that outlives its leader,
+    e.g. a background job that ignores SIGINT, gets the next signal); reaps the leader."""
     popen = started.popen
     signals = ((signal.SIGINT,) if started.interrupt else ()) + (signal.SIGTERM, signal.SIGKILL)
     for sig in signals:
-        if popen.poll() is not None:
+        popen.poll()  # a leader that ended is reaped, else it counts as a member
+        if not _group_alive(popen.pid):
             break
         try:
             os.killpg(popen.pid, sig)
         except ProcessLookupError:
             break
-        try:
-            popen.wait(started.grace if sig != signal.SIGKILL else None)
-        except subprocess.TimeoutExpired:
-            continue
+        deadline = time.monotonic() + (started.grace if sig != signal.SIGKILL else 5.0)
+        while time.monotonic() < deadline:
+            popen.poll()
+            if not _group_alive(popen.pid):
+                break
+            time.sleep(0.05)
     popen.wait()  # reaped: no zombie
     if popen.stdout is not None:
         popen.stdout.close()
