@@ -1,7 +1,9 @@
 // Every fault ends in a controlled stop: decelerate within the comfort limits, then zero torque
 // and the brake. The chair is driven on the model until it cruises, then the fault is injected.
 #include <wheelchair_controller/path_tracker.h>
-#include <wheelchair_controller/test_paths.h>
+#include <wheelchair_controller_test/axle_pose.h>
+#include <wheelchair_controller_test/test_paths.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 
@@ -24,7 +26,7 @@ struct FaultRun {
 /// tracker (return nullopt for none) or call tracker methods.
 FaultRun run(const std::function<std::optional<wc::PoseMeasurement>(
                  wc::PathTracker&, double t, const wc::PoseMeasurement& truth)>& inject) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
   tracker.setPath(wc::PathBuilder({0.0, 0.0, 0.0}).straight(6.0).poses());
   wd::State x = wd::stateAtAxlePose(0.0, 0.0, 0.0, p);
@@ -33,7 +35,7 @@ FaultRun run(const std::function<std::optional<wc::PoseMeasurement>(
   double prev_v = 0.0;
   for (int k = 0; k < 1000; ++k) {
     const double t = k * dt;
-    const wc::PoseMeasurement truth{t, wd::axlePose(x, p)};
+    const wc::PoseMeasurement truth{t, wc::axlePose2D(x, p)};
     std::optional<wc::PoseMeasurement> pose = truth;
     if (t >= t_fault) pose = inject(tracker, t, truth);
     r.last = tracker.update(t, pose, {t, x.tail<2>()});
@@ -100,7 +102,7 @@ TEST(Faults, EmptyPathStops) {
 
 TEST(Faults, PoseJumpOfOneMetreStops) {
   expectControlledStop(run([](wc::PathTracker&, double, wc::PoseMeasurement truth) {
-                         truth.pose.y() += 1.0;
+                         truth.pose.y += 1.0;
                          return std::optional<wc::PoseMeasurement>(truth);
                        }),
                        "pose jump");
@@ -125,14 +127,14 @@ TEST(Faults, LostLocalizationStops) {
 
 TEST(Faults, NonFinitePoseStops) {
   expectControlledStop(run([](wc::PathTracker&, double, wc::PoseMeasurement truth) {
-                         truth.pose.z() = NAN;
+                         truth.pose.yaw = NAN;
                          return std::optional<wc::PoseMeasurement>(truth);
                        }),
                        "non-finite pose");
 }
 
 TEST(Faults, IdleTrackerHoldsTheBrake) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
   const wc::TrackerOutput out =
       tracker.update(0.0, wc::PoseMeasurement{0.0, {0, 0, 0}}, {0.0, {0.0, 0.0}});
@@ -164,9 +166,9 @@ TEST(Faults, UserStopStops) {
 }
 
 TEST(Faults, ReleasedHoldResumesOnlyWithANewPath) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
-  const std::vector<wc::Pose2> path = wc::PathBuilder({0.0, 0.0, 0.0}).straight(2.0).poses();
+  const std::vector<wc::Pose2D> path = wc::PathBuilder({0.0, 0.0, 0.0}).straight(2.0).poses();
   const wc::PoseMeasurement pose{0.0, {0, 0, 0}};
   tracker.hold("localization", "localization lost: test");
   EXPECT_FALSE(tracker.setPath(path).empty());
@@ -186,7 +188,7 @@ TEST(Faults, ReleasedHoldResumesOnlyWithANewPath) {
 // A goal given while localization is lost (e.g. before the first scan after a carer's
 // re-initialization) must not vanish silently: the status the rider sees says it was ignored.
 TEST(Faults, PathDuringAHoldIsRefusedOnTheStatus) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
   tracker.hold("localization", "localization lost: waiting for the first scan");
   double t = 0.0;
@@ -205,7 +207,7 @@ TEST(Faults, PathDuringAHoldIsRefusedOnTheStatus) {
 }
 
 TEST(Faults, PathPreparedElsewhereIsSwappedInByTheNextStep) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
   const wc::PreparedPath prepared = wc::preparePath(
       wc::PathBuilder({0.0, 0.0, 0.0}).straight(2.0).poses(), p, tracker.config(), 0.0);
@@ -220,7 +222,7 @@ TEST(Faults, PathPreparedElsewhereIsSwappedInByTheNextStep) {
 // Reaching the goal ends the path; it is no stop: a path that came in the final moments (the
 // rider's next goal, its reference still being built) must not be dropped as after a stop.
 TEST(Faults, ReachingTheGoalIsNoStopThatDropsTheNextPath) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
   tracker.setPath(wc::PathBuilder({0.0, 0.0, 0.0}).straight(1.0).poses());
   const uint64_t stops = tracker.stopCount();
@@ -228,7 +230,7 @@ TEST(Faults, ReachingTheGoalIsNoStopThatDropsTheNextPath) {
   wc::TrackerOutput out;
   for (int k = 0; k < 1500 && out.state != wc::TrackerState::kGoalReached; ++k) {
     const double t = k * 0.02;
-    out = tracker.update(t, wc::PoseMeasurement{t, wd::axlePose(x, p)}, {t, x.tail<2>()});
+    out = tracker.update(t, wc::PoseMeasurement{t, wc::axlePose2D(x, p)}, {t, x.tail<2>()});
     if (out.command.brake) x.tail<2>().setZero();
     for (int i = 0; i < 20 && !out.command.brake; ++i)
       x = wd::integrateRK4(x, out.command.torque, 1e-3, p);
