@@ -10,7 +10,6 @@
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Int32.h>
-#include <std_msgs/String.h>
 #include <std_srvs/Empty.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/message_filter.h>
@@ -53,7 +52,6 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     cloud_pub_ = nh.advertise<geometry_msgs::PoseArray>("particlecloud", 2, true);
     count_pub_ = nh.advertise<std_msgs::Int32>("kld/particle_count", 5);
     status_pub_ = nh.advertise<wheelchair_msgs::LocalizationStatus>("localization/status", 5, true);
-    legacy_status_pub_ = nh.advertise<std_msgs::String>("kld/localized", 5, true);
     map_sub_ = nh.subscribe("map", 1, &KldLocalizerNodelet::onMap, this);
     // Like amcl: a scan waits (in a bounded queue, without blocking a thread) until odom ->
     // base_link is known at its stamp; odometry may lag the laser by a few tens of ms.
@@ -267,9 +265,6 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
       last_status_ = text;
     }
     status_pub_.publish(wheelchair_ros::toLocalizationStatusMsg(status, ros::Time::now()));
-    std_msgs::String legacy;  // the old String topic, until its consumers read the typed one
-    legacy.data = text;
-    legacy_status_pub_.publish(legacy);
   }
 
   LocalizerNodeConfig config_;
@@ -282,7 +277,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   std::map<std::string, ros::WallTime> last_warning_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
-  ros::Publisher pose_pub_, cloud_pub_, count_pub_, status_pub_, legacy_status_pub_;
+  ros::Publisher pose_pub_, cloud_pub_, count_pub_, status_pub_;
   message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> scan_filter_;
   ros::Subscriber map_sub_, init_sub_;
