@@ -94,7 +94,11 @@ Pose2D GraphSlam::addScan(const wheelchair_core::LaserScan2D& scan, const Pose2D
   path_length_ += std::hypot(motion.x, motion.y);
   last_odometry_ = odometry;
   const Pose2D predicted = wheelchair_core::compose(scanPose(index - 1), motion);
-  MatchResult match = matcher_.match(local_map_, points, predicted);
+  // The odometry's information about this motion, in the map frame.
+  const Eigen::Matrix3d prior =
+      informationOf(rotateCovariance(odometryInformation(motion).inverse(), -predicted.yaw));
+  MatchResult match =
+      matcher_.match(local_map_, points, predicted, config_.odometry_prior ? &prior : nullptr);
   if (!match.accepted) {
     ++stats_.match_failures;
     match.pose = predicted;
@@ -151,11 +155,9 @@ void GraphSlam::tryLoopClosure(size_t k) {
   const auto start = std::chrono::steady_clock::now();
   const LoopClosureConfig& lc = config_.loops;
   const Pose2D pk = graph_.poses()[k];
-  const double path_k = keyframes_[k].path_length;
   size_t best = k;
   double best_d = lc.search_radius;
-  size_t limit = 0;  // keyframes before this index are far enough back along the path
-  while (limit < k && path_k - keyframes_[limit].path_length >= lc.min_path_gap) ++limit;
+  const size_t limit = pathGapLimit(k);
   for (size_t j = 0; j < limit; ++j) {
     const Pose2D& pj = graph_.poses()[j];
     const double d = std::hypot(pj.x - pk.x, pj.y - pk.y);
@@ -194,23 +196,77 @@ void GraphSlam::tryLoopClosure(size_t k) {
     stats_.seconds_loops += secondsSince(start);
     return;
   }
-  ++stats_.loops_verified;
-  const Pose2D pj = graph_.poses()[best];
-  GraphEdge e;
-  e.from = best;
-  e.to = k;
-  e.kind = EdgeKind::kLoopClosure;
-  e.measurement = wheelchair_core::between(pj, refined.pose);
-  e.information = informationOf(rotateCovariance(refined.covariance * lc.covariance_scale, pj.yaw));
-  LoopClosure loop;
-  loop.from = best;
-  loop.to = k;
-  loop.score = found.score;
-  loop.goodness = refined.goodness;
-  loop.edge = graph_.addEdge(e);
-  loops_.push_back(loop);
+  addLoopEdge(best, k, refined, found.score);
   stats_.seconds_loops += secondsSince(start);
   optimizeAndPrune();
+}
+
+size_t GraphSlam::pathGapLimit(size_t k) const {
+  const double path_k = keyframes_[k].path_length;
+  size_t limit = 0;
+  while (limit < k && path_k - keyframes_[limit].path_length >= config_.loops.min_path_gap) ++limit;
+  return limit;
+}
+
+void GraphSlam::addLoopEdge(size_t j, size_t k, const MatchResult& match, double score) {
+  ++stats_.loops_verified;
+  const Pose2D pj = graph_.poses()[j];
+  GraphEdge e;
+  e.from = j;
+  e.to = k;
+  e.kind = EdgeKind::kLoopClosure;
+  e.measurement = wheelchair_core::between(pj, match.pose);
+  e.information =
+      informationOf(rotateCovariance(match.covariance * config_.loops.covariance_scale, pj.yaw));
+  LoopClosure loop;
+  loop.from = j;
+  loop.to = k;
+  loop.score = score;
+  loop.goodness = match.goodness;
+  loop.edge = graph_.addEdge(e);
+  loops_.push_back(loop);
+}
+
+void GraphSlam::densifyLoops() {
+  const auto start = std::chrono::steady_clock::now();
+  const LoopClosureConfig& lc = config_.loops;
+  const size_t w = static_cast<size_t>(lc.submap_half_width);
+  for (size_t k = 1; k < keyframes_.size(); ++k) {
+    const Pose2D pk = graph_.poses()[k];
+    const size_t limit = pathGapLimit(k);
+    // The nearest keyframe of each earlier pass through the neighbourhood.
+    std::vector<std::pair<double, size_t>> near;
+    for (size_t j = 0; j < limit; ++j) {
+      const Pose2D& pj = graph_.poses()[j];
+      const double d = std::hypot(pj.x - pk.x, pj.y - pk.y);
+      if (d < lc.final_radius) near.emplace_back(d, j);
+    }
+    std::sort(near.begin(), near.end());
+    std::vector<size_t> chosen;
+    for (const auto& [d, j] : near) {
+      if (static_cast<int>(chosen.size()) >= lc.final_per_keyframe) break;
+      bool same_pass = false;
+      for (size_t c : chosen) same_pass |= (j > c ? j - c : c - j) <= 2 * w;
+      if (same_pass) continue;
+      bool known = false;
+      for (const LoopClosure& l : loops_) known |= l.kept && l.to == k && l.from == j;
+      if (known) continue;
+      chosen.push_back(j);
+    }
+    for (size_t j : chosen) {
+      const size_t first = j > w ? j - w : 0;
+      const ReferenceCloud reference(keyframePoints(first, j + w, limit));
+      const MatchResult m = matcher_.match(reference, keyframes_[k].points, pk, lc.min_goodness);
+      const Pose2D shift = wheelchair_core::between(pk, m.pose);
+      if (!m.accepted || std::hypot(shift.x, shift.y) > lc.final_max_shift ||
+          std::abs(shift.yaw) > lc.window_yaw) {
+        continue;
+      }
+      addLoopEdge(j, k, m, 0.0);
+      ++stats_.final_pass_loops;
+    }
+  }
+  stats_.seconds_loops += secondsSince(start);
 }
 
 void GraphSlam::optimizeAndPrune() {
@@ -237,7 +293,12 @@ void GraphSlam::optimizeAndPrune() {
 }
 
 void GraphSlam::finish() {
-  if (graph_.size() > 1) optimizeAndPrune();
+  if (graph_.size() < 2) return;
+  optimizeAndPrune();
+  if (config_.loops.enabled && config_.loops.final_pass) {
+    densifyLoops();
+    optimizeAndPrune();
+  }
 }
 
 }  // namespace wheelchair_slam

@@ -100,7 +100,8 @@ IcpMatcher::IcpMatcher(const MatcherConfig& config)
 IcpMatcher::~IcpMatcher() = default;
 
 MatchResult IcpMatcher::match(const ReferenceCloud& reference, const Points& scan,
-                              const wheelchair_core::Pose2D& guess, double min_goodness) const {
+                              const wheelchair_core::Pose2D& guess, double min_goodness,
+                              const Eigen::Matrix3d* prior_information) const {
   MatchResult out;
   out.pose = guess;
   if (reference.empty() || scan.size() < 3) return out;
@@ -121,7 +122,13 @@ MatchResult IcpMatcher::match(const ReferenceCloud& reference, const Points& sca
   refine.max_distance = config_.refine_max_distance;
   refine.kernel = config_.refine_kernel;
   refine.point_sigma = config_.point_sigma;
-  const MatchResult fine = refinePointToLine(reference, scan, out.pose, refine);
+  PosePrior prior;
+  if (prior_information) {
+    prior.mean = guess;
+    prior.information = *prior_information;
+  }
+  const MatchResult fine =
+      refinePointToLine(reference, scan, out.pose, refine, prior_information ? &prior : nullptr);
   if (!fine.accepted) return out;
   out.pose = fine.pose;
   out.covariance = fine.covariance;

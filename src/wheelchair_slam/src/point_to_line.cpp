@@ -9,7 +9,8 @@ namespace wheelchair_slam {
 using wheelchair_core::Pose2D;
 
 MatchResult refinePointToLine(const ReferenceCloud& reference, const Points& scan,
-                              const Pose2D& guess, const PointToLineOptions& options) {
+                              const Pose2D& guess, const PointToLineOptions& options,
+                              const PosePrior* prior) {
   MatchResult out;
   out.pose = guess;
   if (reference.empty()) return out;
@@ -43,7 +44,17 @@ MatchResult refinePointToLine(const ReferenceCloud& reference, const Points& sca
       ++pairs;
     }
     if (pairs < options.min_pairs) return out;
-    const Eigen::LDLT<Eigen::Matrix3d> ldlt(h);
+    // The scan's terms in information units (1 / point_sigma^2), comparable with the prior's.
+    const double scale = 1.0 / (options.point_sigma * options.point_sigma);
+    Eigen::Matrix3d system = scale * h;
+    g *= scale;
+    if (prior) {
+      const Eigen::Vector3d d(pose.x - prior->mean.x, pose.y - prior->mean.y,
+                              wheelchair_core::angleDifference(pose.yaw, prior->mean.yaw));
+      system += prior->information;
+      g += prior->information * d;
+    }
+    const Eigen::LDLT<Eigen::Matrix3d> ldlt(system);
     if (ldlt.info() != Eigen::Success || ldlt.vectorD().minCoeff() <= 1e-9) return out;
     const Eigen::Vector3d step = -ldlt.solve(g);
     pose = {pose.x + step.x(), pose.y + step.y(),
@@ -53,7 +64,8 @@ MatchResult refinePointToLine(const ReferenceCloud& reference, const Points& sca
   const double dof = std::max<double>(1.0, weights - 3.0);
   const double sigma2 = std::max(options.point_sigma * options.point_sigma, weighted_sq / dof);
   out.pose = pose;
-  out.covariance = sigma2 * h.inverse();
+  // A direction the scan leaves free gets a large but finite variance.
+  out.covariance = sigma2 * (h + 1e-6 * Eigen::Matrix3d::Identity()).inverse();
   out.inliers = static_cast<double>(pairs) / std::max<size_t>(1, scan.size());
   out.accepted = out.covariance.allFinite() && pose.isFinite();
   return out;

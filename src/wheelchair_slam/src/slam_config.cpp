@@ -50,7 +50,10 @@ std::string LoopClosureConfig::validate() const {
       .inRange("loops/min_goodness", min_goodness, 0.0, 1.0)
       .check(every_n_keyframes >= 1, "loops/every_n_keyframes must be at least 1")
       .positive("loops/max_chi2", max_chi2)
-      .positive("loops/covariance_scale", covariance_scale);
+      .positive("loops/covariance_scale", covariance_scale)
+      .positive("loops/final_radius", final_radius)
+      .check(final_per_keyframe >= 0, "loops/final_per_keyframe must not be negative")
+      .positive("loops/final_max_shift", final_max_shift);
   return c.result();
 }
 
@@ -102,8 +105,13 @@ void readSlamConfig(wheelchair_core::ConfigReader& r, SlamConfig& c) {
   r.read("loops/every_n_keyframes", l.every_n_keyframes);
   r.read("loops/max_chi2", l.max_chi2);
   r.read("loops/covariance_scale", l.covariance_scale);
+  r.read("loops/final_pass", l.final_pass);
+  r.read("loops/final_radius", l.final_radius);
+  r.read("loops/final_per_keyframe", l.final_per_keyframe);
+  r.read("loops/final_max_shift", l.final_max_shift);
   r.read("match_covariance_scale", c.match_covariance_scale);
   r.read("optimizer_iterations", c.optimizer_iterations);
+  r.read("odometry_prior", c.odometry_prior);
 }
 
 }  // namespace wheelchair_slam

@@ -199,6 +199,7 @@ int run(const Args& a) {
   json << YAML::Key << "loops_verified" << YAML::Value << st.loops_verified;
   json << YAML::Key << "loops_kept" << YAML::Value << kept;
   json << YAML::Key << "loops_removed_chi2" << YAML::Value << st.loops_removed;
+  json << YAML::Key << "final_pass_loops" << YAML::Value << st.final_pass_loops;
   json << YAML::Key << "optimizations" << YAML::Value << st.optimizations;
   json << YAML::Key << "seconds_matching" << YAML::Value << st.seconds_matching;
   json << YAML::Key << "seconds_loops" << YAML::Value << st.seconds_loops;

@@ -28,6 +28,7 @@ struct LoopClosure {
 struct SlamStats {
   size_t scans = 0, keyframes = 0, match_failures = 0;
   size_t loop_attempts = 0, loops_verified = 0, loops_removed = 0, optimizations = 0;
+  size_t final_pass_loops = 0;  ///< of loops_verified, found by the final pass
   double seconds_matching = 0.0, seconds_loops = 0.0, seconds_optimizing = 0.0;
 };
 
@@ -71,6 +72,12 @@ class GraphSlam {
   void tryLoopClosure(size_t keyframe);
   Points keyframePoints(size_t first, size_t last, size_t exclude_from) const;
   void optimizeAndPrune();
+  /// The final pass of loop closures (LoopClosureConfig::final_pass).
+  void densifyLoops();
+  /// Keyframes before the returned index are at least min_path_gap back along the path from k.
+  size_t pathGapLimit(size_t k) const;
+  /// Adds a verified closure from keyframe j to k at k's matched pose.
+  void addLoopEdge(size_t j, size_t k, const MatchResult& match, double score);
   Eigen::Matrix3d odometryInformation(const wheelchair_core::Pose2D& motion) const;
 
   SlamConfig config_;

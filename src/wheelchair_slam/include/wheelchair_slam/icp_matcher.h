@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <memory>
+#include <optional>
 
 namespace wheelchair_slam {
 
@@ -48,13 +49,16 @@ class IcpMatcher {
  public:
   explicit IcpMatcher(const MatcherConfig& config);
   ~IcpMatcher();
-  /// Aligns `scan` (points in the sensor frame) to `reference` starting from `guess`; the
-  /// covariance is MRPT's, scaled by (point_sigma)^2.
+  /// Aligns `scan` (points in the sensor frame) to `reference` starting from `guess`. With
+  /// `prior_information`, the refinement holds the pose to `guess` with that information (in
+  /// the reference frame) where the scan does not constrain it.
   MatchResult match(const ReferenceCloud& reference, const Points& scan,
-                    const wheelchair_core::Pose2D& guess, double min_goodness) const;
+                    const wheelchair_core::Pose2D& guess, double min_goodness,
+                    const Eigen::Matrix3d* prior_information = nullptr) const;
   MatchResult match(const ReferenceCloud& reference, const Points& scan,
-                    const wheelchair_core::Pose2D& guess) const {
-    return match(reference, scan, guess, config_.min_goodness);
+                    const wheelchair_core::Pose2D& guess,
+                    const Eigen::Matrix3d* prior_information = nullptr) const {
+    return match(reference, scan, guess, config_.min_goodness, prior_information);
   }
 
  private:

@@ -15,10 +15,19 @@ struct PointToLineOptions {
   size_t min_pairs = 20;
 };
 
+/// A Gaussian prior on the pose (the odometry's prediction): it holds the directions the scan
+/// does not constrain (along a corridor) instead of letting them drift.
+struct PosePrior {
+  wheelchair_core::Pose2D mean;
+  Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
+};
+
 /// Refines `guess`; `result.accepted` is false (and the pose is the guess) when fewer than
-/// min_pairs points pair or the normal equations are singular.
+/// min_pairs points pair or the normal equations are singular. The returned covariance is the
+/// scan's alone (without the prior), so a graph that also holds the odometry does not count it
+/// twice.
 MatchResult refinePointToLine(const ReferenceCloud& reference, const Points& scan,
                               const wheelchair_core::Pose2D& guess,
-                              const PointToLineOptions& options);
+                              const PointToLineOptions& options, const PosePrior* prior = nullptr);
 
 }  // namespace wheelchair_slam

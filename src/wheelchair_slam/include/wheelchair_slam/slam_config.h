@@ -64,6 +64,13 @@ struct LoopClosureConfig {
   double max_chi2 = 16.27;  ///< 99.9 % of chi2(3)
   /// The loop edge's covariance is the ICP covariance times this (ambiguity of a far match).
   double covariance_scale = 4.0;
+  /// At the end, every keyframe is matched (ICP from the optimized graph) against the submaps
+  /// of up to final_per_keyframe earlier places within final_radius: the dense closures a
+  /// drive's one pass of loop detection misses.
+  bool final_pass = true;
+  double final_radius = 2.0;  ///< [m]
+  int final_per_keyframe = 2;
+  double final_max_shift = 0.3;  ///< a match that moves the keyframe more than this is refused [m]
   std::string validate() const;
 };
 
@@ -75,6 +82,9 @@ struct SlamConfig {
   /// Scan-match edges: ICP covariance times this (ICP is over-confident on real scans).
   double match_covariance_scale = 2.0;
   int optimizer_iterations = 50;
+  /// Scan matching is held to the odometry's prediction with the odometry's information where
+  /// the scan does not constrain the pose.
+  bool odometry_prior = false;
   std::string validate() const;
 };
 
