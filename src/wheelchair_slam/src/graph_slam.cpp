@@ -271,22 +271,13 @@ void GraphSlam::densifyLoops() {
 
 void GraphSlam::optimizeAndPrune() {
   const auto start = std::chrono::steady_clock::now();
-  for (;;) {
-    graph_.optimize(config_.optimizer_iterations);
-    ++stats_.optimizations;
-    double worst = config_.loops.max_chi2;
-    LoopClosure* worst_loop = nullptr;
+  const RobustOptimizeResult r =
+      optimizeRejectingFalseLoops(graph_, config_.optimizer_iterations, config_.loops.max_chi2);
+  stats_.optimizations += r.optimizations;
+  for (size_t edge : r.removed) {
     for (LoopClosure& l : loops_) {
-      if (!l.kept) continue;
-      const double c = graph_.chi2(l.edge);
-      if (c > worst) {
-        worst = c;
-        worst_loop = &l;
-      }
+      if (l.edge == edge) l.kept = false;
     }
-    if (!worst_loop) break;
-    worst_loop->kept = false;
-    graph_.deactivateEdge(worst_loop->edge);
     ++stats_.loops_removed;
   }
   stats_.seconds_optimizing += secondsSince(start);

@@ -79,4 +79,27 @@ OptimizeResult PoseGraph::optimize(int max_iterations) {
   return result;
 }
 
+RobustOptimizeResult optimizeRejectingFalseLoops(PoseGraph& graph, int max_iterations,
+                                                 double max_chi2) {
+  RobustOptimizeResult result;
+  for (;;) {
+    graph.optimize(max_iterations);
+    ++result.optimizations;
+    double worst = max_chi2;
+    size_t worst_edge = graph.edges().size();
+    for (size_t i = 0; i < graph.edges().size(); ++i) {
+      const GraphEdge& e = graph.edges()[i];
+      if (!e.active || e.kind != EdgeKind::kLoopClosure) continue;
+      const double c = graph.chi2(i);
+      if (c > worst) {
+        worst = c;
+        worst_edge = i;
+      }
+    }
+    if (worst_edge == graph.edges().size()) return result;
+    graph.deactivateEdge(worst_edge);
+    result.removed.push_back(worst_edge);
+  }
+}
+
 }  // namespace wheelchair_slam

@@ -1,8 +1,8 @@
-// rosrun wheelchair_slam relation_error --trajectory T.csv (--relations FILE | --reference R.csv)
-//   [--offset S] [--tolerance S]
+// rosrun wheelchair_slam relation_error --trajectory T.csv (--relations FILE | --reference R.csv
+//   [--all-pairs]) [--offset S] [--tolerance S]
 // The Kuemmerle relation error of a trajectory (CSV stamp,x,y,yaw) as one JSON object: against a
-// .relations file (relation time = trajectory time + offset), or against consecutive poses of a
-// reference trajectory.
+// .relations file (relation time = trajectory time + offset), or against consecutive poses (or
+// every pair of poses) of a reference trajectory.
 #include <wheelchair_slam/relations.h>
 
 #include <cmath>
@@ -14,7 +14,8 @@
 namespace {
 
 const char* kUsage =
-    "usage: relation_error --trajectory T.csv (--relations FILE | --reference R.csv)\n"
+    "usage: relation_error --trajectory T.csv (--relations FILE | --reference R.csv "
+    "[--all-pairs])\n"
     "                      [--offset S] [--tolerance S]\n";
 
 void printSummary(const char* name, const wheelchair_slam::ErrorSummary& s, double scale) {
@@ -27,8 +28,13 @@ void printSummary(const char* name, const wheelchair_slam::ErrorSummary& s, doub
 int main(int argc, char** argv) {
   std::string trajectory, relations, reference;
   double offset = 0.0, tolerance = 1e-4;
+  bool all_pairs = false;
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
+    if (k == "--all-pairs") {
+      all_pairs = true;
+      continue;
+    }
     if (i + 1 >= argc) {
       std::cerr << kUsage;
       return 2;
@@ -55,10 +61,10 @@ int main(int argc, char** argv) {
   }
   try {
     const auto poses = wheelchair_slam::readTrajectoryCsv(trajectory);
-    const auto rel =
-        relations.empty()
-            ? wheelchair_slam::consecutiveRelations(wheelchair_slam::readTrajectoryCsv(reference))
-            : wheelchair_slam::readRelations(relations);
+    const auto rel = relations.empty()
+                         ? wheelchair_slam::referenceRelations(
+                               wheelchair_slam::readTrajectoryCsv(reference), all_pairs)
+                         : wheelchair_slam::readRelations(relations);
     const auto errors = wheelchair_slam::relationErrors(rel, poses, offset, tolerance);
     std::printf("{\"relations\": %zu, \"matched\": %zu, ", errors.relations,
                 errors.translational.size());

@@ -31,11 +31,14 @@ std::vector<Relation> readRelations(const std::string& path) {
   return out;
 }
 
-std::vector<Relation> consecutiveRelations(const std::vector<TimedPose>& reference) {
+std::vector<Relation> referenceRelations(const std::vector<TimedPose>& reference, bool all_pairs) {
   std::vector<Relation> out;
-  for (size_t i = 1; i < reference.size(); ++i) {
-    out.push_back({reference[i - 1].stamp, reference[i].stamp,
-                   wheelchair_core::between(reference[i - 1].pose, reference[i].pose)});
+  for (size_t i = 0; i < reference.size(); ++i) {
+    for (size_t j = i + 1; j < (all_pairs ? reference.size() : std::min(i + 2, reference.size()));
+         ++j) {
+      out.push_back({reference[i].stamp, reference[j].stamp,
+                     wheelchair_core::between(reference[i].pose, reference[j].pose)});
+    }
   }
   return out;
 }

@@ -48,6 +48,11 @@ void writeCarmenLog(const std::string& path, const std::vector<wheelchair_core::
   std::FILE* f = std::fopen(path.c_str(), "w");
   if (!f) throw std::runtime_error(path + ": cannot write the log");
   std::fprintf(f, "# wheelchair_slam: FLASER pose = SLAM estimate, odom = raw odometry\n");
+  if (!scans.empty()) {
+    // What FLASER does not say: the beam spacing (MRPT's carmen2rawlog reads it from here).
+    std::fprintf(f, "PARAM laser_front_laser_resolution %g nohost 0\n",
+                 std::abs(scans.front().angle_increment) * 180.0 / M_PI);
+  }
   for (size_t i = 0; i < scans.size(); ++i) {
     const auto& s = scans[i];
     std::fprintf(f, "FLASER %zu", s.ranges.size());

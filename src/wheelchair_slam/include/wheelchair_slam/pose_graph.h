@@ -56,4 +56,15 @@ class PoseGraph {
   std::vector<GraphEdge> edges_;
 };
 
+struct RobustOptimizeResult {
+  std::vector<size_t> removed;  ///< loop-closure edges deactivated, in the order removed
+  size_t optimizations = 0;
+};
+
+/// Optimizes, then while the active loop-closure edge with the largest chi2 exceeds `max_chi2`
+/// (the rest of the graph disagrees with it: a false closure), deactivates it and optimizes
+/// again. Odometry and scan-match edges are never removed.
+RobustOptimizeResult optimizeRejectingFalseLoops(PoseGraph& graph, int max_iterations,
+                                                 double max_chi2);
+
 }  // namespace wheelchair_slam

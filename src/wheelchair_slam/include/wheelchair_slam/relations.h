@@ -22,9 +22,10 @@ struct Relation {
 /// Throws std::runtime_error naming the file and line for a bad line.
 std::vector<Relation> readRelations(const std::string& path);
 
-/// Relations between consecutive poses of a reference trajectory (for a log whose reference is
-/// a corrected trajectory, not a relations file).
-std::vector<Relation> consecutiveRelations(const std::vector<TimedPose>& reference);
+/// Relations between the poses of a reference trajectory (for a log whose reference is a
+/// corrected trajectory, not a relations file): consecutive poses (local accuracy), or every
+/// pair (global consistency).
+std::vector<Relation> referenceRelations(const std::vector<TimedPose>& reference, bool all_pairs);
 
 struct RelationErrors {
   size_t relations = 0;               ///< in the file
