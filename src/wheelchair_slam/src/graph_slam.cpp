@@ -74,7 +74,7 @@ void GraphSlam::rebuildLocalMap() {
   const size_t n = keyframes_.size();
   const size_t width = static_cast<size_t>(config_.matcher.local_map_keyframes);
   const size_t first = n > width ? n - width : 0;
-  local_map_ = ReferenceCloud(keyframePoints(first, n - 1, n));
+  local_map_ = ReferenceCloud(keyframePoints(first, n - 1, n), config_.matcher.map_voxel);
 }
 
 Pose2D GraphSlam::addScan(const wheelchair_core::LaserScan2D& scan, const Pose2D& odometry) {
@@ -85,6 +85,8 @@ Pose2D GraphSlam::addScan(const wheelchair_core::LaserScan2D& scan, const Pose2D
   const size_t index = scans_.size();
   if (keyframes_.empty()) {
     scans_.push_back({0, Pose2D{}});
+    match_info_.emplace_back();
+    match_info_.back().keyframe = true;
     addKeyframe(index, odometry, odometry, std::move(points), nullptr);
     last_odometry_ = odometry;
     stats_.seconds_matching += secondsSince(start);
@@ -103,12 +105,22 @@ Pose2D GraphSlam::addScan(const wheelchair_core::LaserScan2D& scan, const Pose2D
     ++stats_.match_failures;
     match.pose = predicted;
   }
+  ScanMatchInfo info;
+  info.matched = match.accepted;
+  info.goodness = match.goodness;
+  info.inliers = match.inliers;
+  info.sigma_x = std::sqrt(match.covariance(0, 0));
+  info.sigma_y = std::sqrt(match.covariance(1, 1));
+  info.sigma_yaw = std::sqrt(match.covariance(2, 2));
+  info.correction = wheelchair_core::between(predicted, match.pose);
   const size_t kf = keyframes_.size() - 1;
   const Pose2D kf_pose = graph_.poses()[kf];
   const Pose2D from_kf = wheelchair_core::between(kf_pose, match.pose);
   const bool new_keyframe = std::hypot(from_kf.x, from_kf.y) >= config_.keyframes.distance ||
                             std::abs(from_kf.yaw) >= config_.keyframes.angle;
   stats_.seconds_matching += secondsSince(start);
+  info.keyframe = new_keyframe;
+  match_info_.push_back(info);
   if (!new_keyframe) {
     scans_.push_back({kf, from_kf});
     return match.pose;
@@ -187,7 +199,7 @@ void GraphSlam::tryLoopClosure(size_t k) {
     stats_.seconds_loops += secondsSince(start);
     return;
   }
-  const ReferenceCloud reference(submap);
+  const ReferenceCloud reference(submap, config_.matcher.map_voxel);
   const MatchResult refined = matcher_.match(reference, scan, found.pose, lc.min_goodness);
   const Pose2D shift = wheelchair_core::between(found.pose, refined.pose);
   const bool agrees = std::hypot(shift.x, shift.y) < 3 * lc.grid_resolution &&
@@ -255,7 +267,8 @@ void GraphSlam::densifyLoops() {
     }
     for (size_t j : chosen) {
       const size_t first = j > w ? j - w : 0;
-      const ReferenceCloud reference(keyframePoints(first, j + w, limit));
+      const ReferenceCloud reference(keyframePoints(first, j + w, limit),
+                                     config_.matcher.map_voxel);
       const MatchResult m = matcher_.match(reference, keyframes_[k].points, pk, lc.min_goodness);
       const Pose2D shift = wheelchair_core::between(pk, m.pose);
       if (!m.accepted || std::hypot(shift.x, shift.y) > lc.final_max_shift ||

@@ -4,6 +4,9 @@
 #include <wheelchair_slam/icp_matcher.h>
 #include <wheelchair_slam/point_to_line.h>
 #include <Eigen/Eigenvalues>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
 
 namespace wheelchair_slam {
 
@@ -60,10 +63,37 @@ ReferenceCloud::ReferenceCloud() : impl_(std::make_unique<Impl>()) {}
 ReferenceCloud::~ReferenceCloud() = default;
 ReferenceCloud::ReferenceCloud(ReferenceCloud&&) noexcept = default;
 ReferenceCloud& ReferenceCloud::operator=(ReferenceCloud&&) noexcept = default;
-ReferenceCloud::ReferenceCloud(const Points& points) : impl_(std::make_unique<Impl>()) {
-  impl_->map = toPointsMap(points);
-  impl_->points = points;
-  if (!points.empty()) impl_->computeNormals();
+namespace {
+
+Points voxelMeans(const Points& points, double voxel) {
+  if (voxel <= 0.0) return points;
+  std::unordered_map<int64_t, std::pair<Eigen::Vector2d, int>> cells;
+  cells.reserve(points.size());
+  std::vector<int64_t> order;
+  for (const Eigen::Vector2d& p : points) {
+    const int64_t key = (static_cast<int64_t>(std::floor(p.x() / voxel)) << 32) ^
+                        (static_cast<int64_t>(std::floor(p.y() / voxel)) & 0xffffffff);
+    auto [it, inserted] = cells.try_emplace(key, Eigen::Vector2d::Zero(), 0);
+    if (inserted) order.push_back(key);
+    it->second.first += p;
+    ++it->second.second;
+  }
+  Points out;
+  out.reserve(order.size());
+  for (int64_t key : order) {
+    const auto& [sum, n] = cells[key];
+    out.push_back(sum / n);
+  }
+  return out;
+}
+
+}  // namespace
+
+ReferenceCloud::ReferenceCloud(const Points& points, double voxel)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->points = voxelMeans(points, voxel);
+  impl_->map = toPointsMap(impl_->points);
+  if (!impl_->points.empty()) impl_->computeNormals();
 }
 size_t ReferenceCloud::size() const { return impl_->points.size(); }
 const Eigen::Vector2d& ReferenceCloud::point(size_t i) const { return impl_->points[i]; }

@@ -9,6 +9,7 @@ std::string MatcherConfig::validate() const {
   c.positive("matcher/max_range", max_range)
       .nonNegative("matcher/point_spacing", point_spacing)
       .check(local_map_keyframes >= 1, "matcher/local_map_keyframes must be at least 1")
+      .nonNegative("matcher/map_voxel", map_voxel)
       .positive("matcher/icp_threshold_dist", icp_threshold_dist)
       .nonNegative("matcher/icp_threshold_ang", icp_threshold_ang)
       .positive("matcher/icp_smallest_dist", icp_smallest_dist)
@@ -73,6 +74,7 @@ void readSlamConfig(wheelchair_core::ConfigReader& r, SlamConfig& c) {
   r.read("matcher/max_range", m.max_range);
   r.read("matcher/point_spacing", m.point_spacing);
   r.read("matcher/local_map_keyframes", m.local_map_keyframes);
+  r.read("matcher/map_voxel", m.map_voxel);
   r.read("matcher/icp_threshold_dist", m.icp_threshold_dist);
   r.read("matcher/icp_threshold_ang", m.icp_threshold_ang);
   r.read("matcher/icp_smallest_dist", m.icp_smallest_dist);

@@ -31,6 +31,7 @@ const char* kUsage =
     "  FILE             CARMEN log (plain or .gz) with FLASER/ROBOTLASER1 and raw odometry\n"
     "  --out DIR        output folder (default slam_out): map.yaml/.pgm/.png, trajectory.csv,\n"
     "                   trajectory.clf, odometry.csv, logged.csv (the log's own poses),\n"
+    "                   matches.csv (how each scan matched),\n"
     "                   stats.json\n"
     "  --odometry SRC   fields: the FLASER odom fields are raw odometry (default);\n"
     "                   gfs: a GMapping-corrected log, raw odometry from its ODOM increments\n"
@@ -104,6 +105,20 @@ double peakRssMb() {
   return usage.ru_maxrss / 1024.0;
 }
 
+void writeMatchesCsv(const std::string& path, const std::vector<double>& stamps,
+                     const std::vector<ScanMatchInfo>& info) {
+  std::ofstream f(path);
+  f << "stamp,matched,keyframe,goodness,inliers,sigma_x,sigma_y,sigma_yaw,correction_x,"
+       "correction_y,correction_yaw\n";
+  for (size_t i = 0; i < info.size() && i < stamps.size(); ++i) {
+    const ScanMatchInfo& m = info[i];
+    f << std::fixed << stamps[i] << "," << m.matched << "," << m.keyframe << "," << m.goodness
+      << "," << m.inliers << "," << m.sigma_x << "," << m.sigma_y << "," << m.sigma_yaw << ","
+      << m.correction.x << "," << m.correction.y << "," << m.correction.yaw << "\n";
+  }
+  if (!f) throw std::runtime_error(path + ": cannot write");
+}
+
 std::vector<TimedPose> timed(const std::vector<double>& stamps,
                              const std::vector<wheelchair_core::Pose2D>& poses) {
   std::vector<TimedPose> out;
@@ -155,6 +170,7 @@ int run(const Args& a) {
   writeTrajectoryCsv((out / "trajectory.csv").string(), timed(stamps, poses));
   writeTrajectoryCsv((out / "odometry.csv").string(), timed(stamps, odometry));
   writeTrajectoryCsv((out / "logged.csv").string(), timed(stamps, logged));
+  if (!a.odometry_only) writeMatchesCsv((out / "matches.csv").string(), stamps, slam.matchInfo());
   writeCarmenLog((out / "trajectory.clf").string(), scans, poses, odometry);
 
   wheelchair_mapping::MapperConfig mapper_config;

@@ -25,6 +25,15 @@ struct LoopClosure {
   size_t edge = 0;          ///< index in the graph's edges
 };
 
+/// How one scan was matched (for diagnosis: slam writes them to matches.csv).
+struct ScanMatchInfo {
+  bool matched = false;  ///< false: the match was refused and odometry used
+  bool keyframe = false;
+  double goodness = 0.0, inliers = 0.0;
+  double sigma_x = 0.0, sigma_y = 0.0, sigma_yaw = 0.0;  ///< of the match, map frame
+  wheelchair_core::Pose2D correction;  ///< matched pose seen from the odometry's prediction
+};
+
 struct SlamStats {
   size_t scans = 0, keyframes = 0, match_failures = 0;
   size_t loop_attempts = 0, loops_verified = 0, loops_removed = 0, optimizations = 0;
@@ -51,6 +60,7 @@ class GraphSlam {
   std::vector<size_t> keyframeScans() const;
   const std::vector<LoopClosure>& loopClosures() const { return loops_; }
   const SlamStats& stats() const { return stats_; }
+  const std::vector<ScanMatchInfo>& matchInfo() const { return match_info_; }
 
  private:
   struct Keyframe {
@@ -85,6 +95,7 @@ class GraphSlam {
   PoseGraph graph_;
   std::vector<Keyframe> keyframes_;
   std::vector<ScanRecord> scans_;
+  std::vector<ScanMatchInfo> match_info_;
   std::vector<double> stamps_;
   std::vector<LoopClosure> loops_;
   ReferenceCloud local_map_;

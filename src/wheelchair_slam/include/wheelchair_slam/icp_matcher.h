@@ -30,7 +30,9 @@ class ReferenceCloud {
   ~ReferenceCloud();
   ReferenceCloud(ReferenceCloud&&) noexcept;
   ReferenceCloud& operator=(ReferenceCloud&&) noexcept;
-  explicit ReferenceCloud(const Points& points);
+  /// `points` averaged per cell of `voxel` metres (0: kept as they are), so that many scans of
+  /// one wall make one even line of points, not a blob that fits no normal.
+  explicit ReferenceCloud(const Points& points, double voxel = 0.0);
   size_t size() const;
   bool empty() const { return size() == 0; }
   const Eigen::Vector2d& point(size_t i) const;

@@ -15,6 +15,7 @@ struct MatcherConfig {
   double max_range = 25.0;          ///< returns farther than this are not matched [m]
   double point_spacing = 0.05;      ///< scan points closer than this to the previous are dropped
   int local_map_keyframes = 12;     ///< the local map is built from this many last keyframes
+  double map_voxel = 0.05;          ///< reference points averaged per cell of this [m] (0: not)
   double icp_threshold_dist = 0.4;  ///< initial pairing distance [m]
   double icp_threshold_ang = 0.02;  ///< pairing distance grows by this per metre of range [rad]
   double icp_smallest_dist = 0.04;  ///< ICP stops refining below this pairing distance [m]
