@@ -5,6 +5,7 @@
 // build_map reads), the raw odometry (odometry.csv) and the run's statistics (stats.json).
 #include <sys/resource.h>
 #include <wheelchair_core/map_io.h>
+
 #include <wheelchair_mapping/map_consistency.h>
 #include <wheelchair_mapping/progress_bar.h>
 #include <wheelchair_slam/graph_slam.h>
@@ -12,8 +13,10 @@
 #include <wheelchair_slam/slam_map.h>
 #include <wheelchair_slam/trajectory_io.h>
 #include <yaml-cpp/yaml.h>
+#include "bag_source.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -28,7 +31,10 @@ namespace {
 const char* kUsage =
     "usage: slam --log FILE [--out DIR] [--odometry fields|gfs] [--config FILE.yaml]\n"
     "            [--resolution M] [--max-range M] [--hold-out N] [--odometry-only] [--quiet]\n"
-    "  FILE             CARMEN log (plain or .gz) with FLASER/ROBOTLASER1 and raw odometry\n"
+    "            [--scan-topic T] [--odom-frame F]\n"
+    "  FILE             CARMEN log (plain or .gz) with FLASER/ROBOTLASER1 and raw odometry,\n"
+    "                   or a rosbag (.bag): LaserScan on --scan-topic (default /scan), the\n"
+    "                   laser's odometry pose from /tf in --odom-frame (default odom)\n"
     "  --out DIR        output folder (default slam_out): map.yaml/.pgm/.png, trajectory.csv,\n"
     "                   trajectory.clf, odometry.csv, logged.csv (the log's own poses),\n"
     "                   matches.csv (how each scan matched),\n"
@@ -44,6 +50,7 @@ const char* kUsage =
 
 struct Args {
   std::string log, out = "slam_out", odometry = "fields", config;
+  std::string scan_topic = "/scan", odom_frame = "odom";
   double resolution = 0.05, max_range = 20.0;
   int hold_out = 0;
   bool odometry_only = false, quiet = false;
@@ -73,6 +80,10 @@ bool parseArgs(int argc, char** argv, Args& a) {
       ok = text(a.odometry);
     else if (k == "--config")
       ok = text(a.config);
+    else if (k == "--scan-topic")
+      ok = text(a.scan_topic);
+    else if (k == "--odom-frame")
+      ok = text(a.odom_frame);
     else if (k == "--resolution")
       ok = number(a.resolution);
     else if (k == "--max-range")
@@ -105,6 +116,17 @@ double peakRssMb() {
   return usage.ru_maxrss / 1024.0;
 }
 
+/// FLASER lines carry no angles: only scans of 180 deg from -90 deg can be written as FLASER.
+bool flaserCompatible(const std::vector<wheelchair_core::LaserScan2D>& scans) {
+  for (const auto& s : scans) {
+    const size_t n = s.ranges.size();
+    const double step = n % 2 == 0 ? M_PI / n : M_PI / std::max<size_t>(n - 1, 1);
+    if (std::abs(s.angle_min + M_PI / 2) > 1e-3 || std::abs(s.angle_increment - step) > 1e-6)
+      return false;
+  }
+  return true;
+}
+
 void writeMatchesCsv(const std::string& path, const std::vector<double>& stamps,
                      const std::vector<ScanMatchInfo>& info) {
   std::ofstream f(path);
@@ -126,10 +148,9 @@ std::vector<TimedPose> timed(const std::vector<double>& stamps,
   return out;
 }
 
-int run(const Args& a) {
-  const auto start = std::chrono::steady_clock::now();
-  const SlamConfig config = loadSlamConfig(a.config);
-  OdometryLogReader reader(a.log, odometrySourceFromName(a.odometry));
+template <typename Reader>
+int runWith(Reader& reader, const Args& a, const SlamConfig& config,
+            std::chrono::steady_clock::time_point start) {
   GraphSlam slam(config);
   wheelchair_mapping::ProgressBar bar(stderr, "slam", !a.quiet);
   std::vector<wheelchair_core::LaserScan2D> scans;
@@ -171,7 +192,12 @@ int run(const Args& a) {
   writeTrajectoryCsv((out / "odometry.csv").string(), timed(stamps, odometry));
   writeTrajectoryCsv((out / "logged.csv").string(), timed(stamps, logged));
   if (!a.odometry_only) writeMatchesCsv((out / "matches.csv").string(), stamps, slam.matchInfo());
-  writeCarmenLog((out / "trajectory.clf").string(), scans, poses, odometry);
+  if (flaserCompatible(scans)) {
+    writeCarmenLog((out / "trajectory.clf").string(), scans, poses, odometry);
+  } else if (!a.quiet) {
+    std::cerr << "slam: trajectory.clf not written: the scans are not FLASER scans (180 deg from "
+                 "-90 deg in 180/181/360/361 beams)\n";
+  }
 
   wheelchair_mapping::MapperConfig mapper_config;
   mapper_config.resolution = a.resolution;
@@ -241,6 +267,17 @@ int run(const Args& a) {
   }
   std::cout << json.c_str() << "\n";
   return 0;
+}
+
+int run(const Args& a) {
+  const auto start = std::chrono::steady_clock::now();
+  const SlamConfig config = loadSlamConfig(a.config);
+  if (std::filesystem::path(a.log).extension() == ".bag") {
+    BagOdometryReader reader(a.log, a.scan_topic, a.odom_frame);
+    return runWith(reader, a, config, start);
+  }
+  OdometryLogReader reader(a.log, odometrySourceFromName(a.odometry));
+  return runWith(reader, a, config, start);
 }
 
 }  // namespace
