@@ -49,16 +49,17 @@ double PoseGraph::totalChi2() const {
   return sum;
 }
 
-OptimizeResult PoseGraph::optimize(int max_iterations) {
-  OptimizeResult result;
-  result.initial_chi2 = totalChi2();
-  if (poses_.size() < 2 || edges_.empty()) return result;
+namespace {
+
+/// The active edges and every node as MRPT's graph.
+mrpt::graphs::CNetworkOfPoses2DInf toMrptGraph(const std::vector<Pose2D>& poses,
+                                               const std::vector<GraphEdge>& edges) {
   mrpt::graphs::CNetworkOfPoses2DInf graph;
   graph.root = 0;
-  for (size_t i = 0; i < poses_.size(); ++i) {
-    graph.nodes[i] = mrpt::poses::CPose2D(poses_[i].x, poses_[i].y, poses_[i].yaw);
+  for (size_t i = 0; i < poses.size(); ++i) {
+    graph.nodes[i] = mrpt::poses::CPose2D(poses[i].x, poses[i].y, poses[i].yaw);
   }
-  for (const GraphEdge& e : edges_) {
+  for (const GraphEdge& e : edges) {
     if (!e.active) continue;
     mrpt::poses::CPosePDFGaussianInf pdf;
     pdf.mean = mrpt::poses::CPose2D(e.measurement.x, e.measurement.y, e.measurement.yaw);
@@ -66,6 +67,24 @@ OptimizeResult PoseGraph::optimize(int max_iterations) {
       for (int c = 0; c < 3; ++c) pdf.cov_inv(r, c) = e.information(r, c);
     graph.insertEdge(e.from, e.to, pdf);
   }
+  return graph;
+}
+
+}  // namespace
+
+void PoseGraph::save(const std::string& path) const {
+  try {
+    toMrptGraph(poses_, edges_).saveToTextFile(path);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + ": cannot write the pose graph (" + e.what() + ")");
+  }
+}
+
+OptimizeResult PoseGraph::optimize(int max_iterations) {
+  OptimizeResult result;
+  result.initial_chi2 = totalChi2();
+  if (poses_.size() < 2 || edges_.empty()) return result;
+  mrpt::graphs::CNetworkOfPoses2DInf graph = toMrptGraph(poses_, edges_);
   mrpt::graphslam::TResultInfoSpaLevMarq info;
   mrpt::containers::yaml params = mrpt::containers::yaml::Map();
   params["max_iterations"] = static_cast<uint64_t>(max_iterations);

@@ -37,7 +37,7 @@ const char* kUsage =
     "                   laser's odometry pose from /tf in --odom-frame (default odom)\n"
     "  --out DIR        output folder (default slam_out): map.yaml/.pgm/.png, trajectory.csv,\n"
     "                   trajectory.clf, odometry.csv, logged.csv (the log's own poses),\n"
-    "                   matches.csv (how each scan matched),\n"
+    "                   matches.csv (how each scan matched), graph.graph (the pose graph),\n"
     "                   stats.json\n"
     "  --odometry SRC   fields: the FLASER odom fields are raw odometry (default);\n"
     "                   gfs: a GMapping-corrected log, raw odometry from its ODOM increments\n"
@@ -191,7 +191,10 @@ int runWith(Reader& reader, const Args& a, const SlamConfig& config,
   writeTrajectoryCsv((out / "trajectory.csv").string(), timed(stamps, poses));
   writeTrajectoryCsv((out / "odometry.csv").string(), timed(stamps, odometry));
   writeTrajectoryCsv((out / "logged.csv").string(), timed(stamps, logged));
-  if (!a.odometry_only) writeMatchesCsv((out / "matches.csv").string(), stamps, slam.matchInfo());
+  if (!a.odometry_only) {
+    writeMatchesCsv((out / "matches.csv").string(), stamps, slam.matchInfo());
+    slam.graph().save((out / "graph.graph").string());
+  }
   if (flaserCompatible(scans)) {
     writeCarmenLog((out / "trajectory.clf").string(), scans, poses, odometry);
   } else if (!a.quiet) {

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace wheelchair_slam {
@@ -43,6 +44,9 @@ class PoseGraph {
   /// Node 0 stays fixed.
   OptimizeResult optimize(int max_iterations);
   double chi2(size_t edge_index) const;
+  /// The nodes and active edges in g2o's text format (VERTEX_SE2 / EDGE_SE2 lines, MRPT's
+  /// saveToTextFile). Throws std::runtime_error naming the file on failure.
+  void save(const std::string& path) const;
   /// Sum over the active edges.
   double totalChi2() const;
 
