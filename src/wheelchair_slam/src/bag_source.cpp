@@ -1,11 +1,11 @@
 #include "bag_source.h"
 
-#include <wheelchair_mapping/bag_scans.h>
+#include <wheelchair_logs/bag_scans.h>
 
 namespace wheelchair_slam {
 
 struct BagOdometryReader::Impl {
-  wheelchair_mapping::BagScanReader reader;
+  wheelchair_logs::BagScanReader reader;
   Impl(const std::string& path, const std::string& topic, const std::string& frame)
       : reader(path, topic, frame) {}
 };
@@ -17,7 +17,7 @@ BagOdometryReader::BagOdometryReader(const std::string& path, const std::string&
 BagOdometryReader::~BagOdometryReader() = default;
 
 bool BagOdometryReader::next(OdometryScan& out) {
-  wheelchair_mapping::LogScan s;
+  wheelchair_logs::LogScan s;
   if (!impl_->reader.next(s)) return false;
   out.scan = std::move(s.scan);
   out.odometry = s.laser_pose;

@@ -1,5 +1,5 @@
 // A rosbag as a SLAM input for the slam tool (not the core): sensor_msgs/LaserScan on a topic,
-// the laser's odometry pose from the bag's tf in the odometry frame (wheelchair_mapping's
+// the laser's odometry pose from the bag's tf in the odometry frame (wheelchair_logs'
 // BagScanReader, which needs ROS's tf2 and rosbag).
 #pragma once
 

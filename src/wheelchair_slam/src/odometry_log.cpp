@@ -1,5 +1,5 @@
-// The one file of this package that includes wheelchair_mapping's CARMEN reader.
-#include <wheelchair_mapping/carmen_log.h>
+// The one file of this package that includes the CARMEN reader (wheelchair_logs).
+#include <wheelchair_logs/carmen_log.h>
 #include <wheelchair_slam/odometry_log.h>
 #include <zlib.h>
 
@@ -56,7 +56,7 @@ struct OdometryLogReader::Impl {
   double size = 1.0;
   std::vector<char> buffer = std::vector<char>(1 << 16);
   size_t line_number = 0;
-  wheelchair_mapping::CarmenOptions options;
+  wheelchair_logs::CarmenOptions options;
   // kGfsIncrements state
   bool have_previous = false;
   Pose2D previous_corrected, odometry, last_odom_line;
@@ -117,7 +117,7 @@ bool OdometryLogReader::next(OdometryScan& out) {
       s.have_odom_line = true;
       continue;
     }
-    auto scan = wheelchair_mapping::parseCarmenLine(line, s.options, error);
+    auto scan = wheelchair_logs::parseCarmenLine(line, s.options, error);
     if (!scan) {
       if (!error.empty()) report(error);
       continue;

@@ -7,7 +7,7 @@
 #include <wheelchair_core/map_io.h>
 
 #include <wheelchair_mapping/map_consistency.h>
-#include <wheelchair_mapping/progress_bar.h>
+#include <wheelchair_logs/progress_bar.h>
 #include <wheelchair_slam/graph_slam.h>
 #include <wheelchair_slam/odometry_log.h>
 #include <wheelchair_slam/slam_map.h>
@@ -152,7 +152,7 @@ template <typename Reader>
 int runWith(Reader& reader, const Args& a, const SlamConfig& config,
             std::chrono::steady_clock::time_point start) {
   GraphSlam slam(config);
-  wheelchair_mapping::ProgressBar bar(stderr, "slam", !a.quiet);
+  wheelchair_logs::ProgressBar bar(stderr, "slam", !a.quiet);
   std::vector<wheelchair_core::LaserScan2D> scans;
   std::vector<wheelchair_core::Pose2D> odometry, logged;
   std::vector<double> stamps;

@@ -1,4 +1,4 @@
-#include <wheelchair_mapping/map_preview.h>
+#include <wheelchair_logs/map_preview.h>
 #include <wheelchair_slam/slam_map.h>
 
 #include <opencv2/core.hpp>
@@ -25,7 +25,7 @@ void savePreviewWithTrajectory(
     const wheelchair_mapping::BayesMapper& mapper, const std::vector<wheelchair_core::Pose2D>& path,
     const std::vector<std::pair<wheelchair_core::Pose2D, wheelchair_core::Pose2D>>& loops,
     const std::string& png_path) {
-  wheelchair_mapping::savePreviewPng(mapper.grid(), png_path);
+  wheelchair_logs::savePreviewPng(mapper.grid(), png_path);
   cv::Mat grey = cv::imread(png_path, cv::IMREAD_GRAYSCALE);
   if (grey.empty()) throw std::runtime_error(png_path + ": cannot read back the preview");
   cv::Mat image;

@@ -1,5 +1,5 @@
 // Laser scans with the robot's raw odometry from CARMEN logs (plain or gzip). The scan itself is
-// parsed by wheelchair_mapping's CARMEN reader; this adds what that reader does not give yet:
+// parsed by wheelchair_logs' CARMEN reader; this adds what that reader does not give yet:
 // the odometry of each scan (for issue 21's reader to take over).
 //   kFields:        the odom_x odom_y odom_theta fields of FLASER (ROBOTLASER1: the robot pose)
 //                   are raw odometry (raw logs, the derived_*_gt_rawodom.clf files).

@@ -19,7 +19,7 @@ wheelchair_mapping::BayesMapper buildMap(const std::vector<wheelchair_core::Lase
                                          const wheelchair_mapping::MapperConfig& config,
                                          size_t* skipped = nullptr);
 
-/// The grid's preview (wheelchair_mapping::savePreviewPng) with the trajectory in blue and each
+/// The grid's preview (wheelchair_logs::savePreviewPng) with the trajectory in blue and each
 /// loop closure as a red segment between its two poses. Throws std::runtime_error on failure.
 void savePreviewWithTrajectory(
     const wheelchair_mapping::BayesMapper& mapper, const std::vector<wheelchair_core::Pose2D>& path,
