@@ -1,0 +1,203 @@
+#include <wheelchair_display/rider_text.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <regex>
+
+namespace wheelchair_display {
+namespace {
+
+using Phase = DriveView::Phase;
+using Tone = Message::Tone;
+using Scan = ScanView::State;
+using Loc = LocalizationView::State;
+
+/// The destination as words: the place's name, or "the chosen spot" for a point on the map.
+std::string destinationName(const std::string& id) {
+  return id.empty() ? "the chosen spot" : riderName(id);
+}
+
+/// `text` with its first letter capital (a sentence that begins with a name or "the").
+std::string sentence(std::string text) {
+  if (!text.empty()) text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+  return text;
+}
+
+std::string orDefault(const std::string& given, const std::string& fallback) {
+  return given.empty() ? fallback : given;
+}
+
+/// The scanning HMI's prompt (what a switch press does now), or "".
+std::string scanPrompt(const ScanView& scan) {
+  const std::string item = scan.highlightedItem();
+  switch (scan.state) {
+    case Scan::kRooms:
+    case Scan::kPlaces:
+      return item.empty() ? "" : "Press to choose " + riderName(item) + ".";
+    case Scan::kConfirming:
+      return "Press again to go to " + destinationName(scan.place) + ".";
+    case Scan::kDriving:
+      return "Press to stop.";
+    case Scan::kIdle:
+      break;
+  }
+  return "";
+}
+
+/// The drive's status sentence and tone; false if there is no drive to speak of.
+bool driveStatus(const DriveView& drive, Message& m) {
+  const std::string where = destinationName(drive.destination);
+  switch (drive.phase) {
+    case Phase::kNone:
+      return false;
+    case Phase::kChecking:
+      m.status = "Checking the way to " + where + ".";
+      return true;
+    case Phase::kReachable:
+      m.status = sentence(std::isfinite(drive.distance)
+                              ? where + " is " + distanceText(drive.distance) + " away."
+                              : where + " is chosen.");  // no route check available
+      m.prompt = "Press Go to drive there.";
+      m.show_go = true;
+      m.tone = Tone::kAttention;
+      return true;
+    case Phase::kRefused:
+      m.status = orDefault(drive.sentence, "The chair cannot get to " + where + ".");
+      m.prompt = "Choose another place.";
+      m.tone = Tone::kAttention;
+      return true;
+    case Phase::kDriving:
+      m.status = std::isfinite(drive.distance)
+                     ? "Driving to " + where + " \u2014 " + distanceText(drive.distance) + " to go."
+                     : "Driving to " + where + ".";
+      m.prompt = "Press STOP or the switch to stop.";
+      return true;
+    case Phase::kArrived:
+      m.status = orDefault(drive.sentence, "Arrived at " + where + ".");
+      return true;
+    case Phase::kStoppedByRider:
+      m.status = orDefault(drive.sentence, "Stopped: you pressed stop.");
+      m.tone = Tone::kStopped;
+      return true;
+    case Phase::kFailed:
+      m.status = orDefault(drive.sentence, "Stopped on the way to " + where + ".");
+      m.tone = Tone::kStopped;
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::string riderName(const std::string& id) {
+  std::string words;
+  for (char c : id) words += (c == '_' || c == '-') ? ' ' : c;
+  if (!words.empty())
+    words[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(words[0])));
+  return words;
+}
+
+std::string distanceText(double metres) {
+  char text[32];
+  if (metres < 9.95)
+    std::snprintf(text, sizeof(text), "%.1f m", std::max(0.0, metres));
+  else
+    std::snprintf(text, sizeof(text), "%.0f m", metres);
+  return text;
+}
+
+std::string safetySentence(SafetyView::Reason reason) {
+  using R = SafetyView::Reason;
+  switch (reason) {
+    case R::kNone:
+      return "";
+    case R::kNoData:
+      return "Waiting for the sensors.";
+    case R::kLocalizationLost:
+      return "Stopped: I lost track of where the chair is.";
+    case R::kCovarianceTooLarge:
+      return "Stopped: I am not sure where the chair is.";
+    case R::kLaserSilent:
+      return "Stopped: the laser scanner is silent.";
+    case R::kPoseStale:
+      return "Stopped: the chair's position is out of date.";
+    case R::kObstacle:
+      return "Stopped: something is in the way.";
+    case R::kDriverFault:
+      return "Stopped: the motors report a fault.";
+    case R::kUserStop:
+      return "Stopped: you pressed stop.";
+  }
+  return "Stopped.";
+}
+
+std::string localizationSentence(LocalizationView::State state) {
+  switch (state) {
+    case Loc::kUnknown:
+    case Loc::kUninitialized:
+      return "I don't know where the chair is yet.";
+    case Loc::kLocalizing:
+      return "Finding where the chair is.";
+    case Loc::kLocalized:
+      return "";
+    case Loc::kAmbiguous:
+    case Loc::kUncertain:
+      return "I am not sure where the chair is.";
+    case Loc::kMisfit:
+      return "I lost track of where the chair is.";
+    case Loc::kNoData:
+      return "Waiting for the sensors.";
+  }
+  return "";
+}
+
+Message describe(const DisplayInputs& in) {
+  Message m;
+  const std::string scan_prompt = scanPrompt(in.scan);
+  if (!in.have_map) {
+    m.status = "Waiting for the map.";
+    return m;
+  }
+  if (in.safety.known && in.safety.stop && in.safety.reason != SafetyView::Reason::kNoData) {
+    m.status = orDefault(in.safety.sentence, safetySentence(in.safety.reason));
+    m.tone = Message::Tone::kStopped;
+    m.prompt = scan_prompt.empty() ? "Choose where to go to drive on." : scan_prompt;
+    return m;
+  }
+  const bool lost =
+      in.localization.state != Loc::kUnknown && in.localization.state != Loc::kLocalized;
+  if (lost || !in.have_pose) {
+    m.status =
+        lost ? orDefault(in.localization.sentence, localizationSentence(in.localization.state))
+             : localizationSentence(Loc::kUnknown);
+    m.tone = Message::Tone::kAttention;
+    m.prompt = "A carer can set the chair's position.";
+    return m;
+  }
+  if (driveStatus(in.drive, m)) {
+    // A scanning HMI owns the switch: its prompt says what a press does.
+    if (!scan_prompt.empty() && !m.show_go) m.prompt = scan_prompt;
+    if (m.prompt.empty())
+      m.prompt = in.scan.scanning() ? scan_prompt : "Point at a room to choose it.";
+    return m;
+  }
+  if (in.scan.state == Scan::kDriving) {
+    m.status = "Driving to " + destinationName(in.scan.place) + ".";
+    m.prompt = scan_prompt;
+    return m;
+  }
+  m.status = "Choose where to go.";
+  m.prompt = !scan_prompt.empty()      ? scan_prompt
+             : in.pointer_room.empty() ? "Point at a room to choose it."
+                                       : "Point at a place to choose it.";
+  return m;
+}
+
+std::string spokenText(const std::string& sentence) {
+  std::string text = std::regex_replace(sentence, std::regex(" \u2014 "), ", ");
+  return std::regex_replace(text, std::regex("([0-9]) m\\b"), "$1 metres");
+}
+
+}  // namespace wheelchair_display
