@@ -39,6 +39,15 @@ TEST(Dwell, MovingToAnotherTargetOrBeyondTheRadiusStartsAgain) {
   EXPECT_TRUE(dwell.update(3.9, {150, 100}, 4).fired);
 }
 
+TEST(Dwell, AfterAChoiceNothingIsChosenUntilThePointerMoves) {
+  DwellTimer dwell(1.0, 20.0);
+  dwell.rest({100, 100});  // a room opened under the pointer: now a place lies there
+  for (double t = 0; t < 5; t += 0.1) EXPECT_FALSE(dwell.update(t, {105, 98}, 7).fired);
+  dwell.update(5.0, {160, 100}, 7);  // moved away (and still on the place): a new dwell
+  EXPECT_FALSE(dwell.update(5.9, {160, 100}, 7).fired);
+  EXPECT_TRUE(dwell.update(6.0, {160, 100}, 7).fired);
+}
+
 TEST(Dwell, NothingToChooseNeverFires) {
   DwellTimer dwell(0.5, 20.0);
   for (double t = 0; t < 5; t += 0.1) EXPECT_FALSE(dwell.update(t, {1, 1}, kNoTarget).fired);

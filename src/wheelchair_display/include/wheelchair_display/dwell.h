@@ -23,8 +23,12 @@ class DwellTimer {
 
   /// The pointer at `pointer` [px] over `target` (kNoTarget: nothing to choose) at `now` [s].
   State update(double now, const Eigen::Vector2d& pointer, int target);
-  /// Forgets the current dwell (the pointer left the window, the screen changed).
+  /// Forgets the current dwell (the pointer left the window).
   void reset();
+  /// Something was just chosen at `pointer` and the screen changes under it: nothing is chosen
+  /// again until the pointer has moved more than the radius away (a dwell that opened a room
+  /// does not go on to choose whatever the room shows under the resting pointer).
+  void rest(const Eigen::Vector2d& pointer);
 
   double dwellTime() const { return dwell_time_; }
 
@@ -32,6 +36,7 @@ class DwellTimer {
   double dwell_time_, radius_;
   int target_ = kNoTarget;
   int fired_target_ = kNoTarget;
+  bool resting_ = false;
   double start_ = 0.0;
   Eigen::Vector2d anchor_{0.0, 0.0};
 };

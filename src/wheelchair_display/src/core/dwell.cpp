@@ -10,10 +10,22 @@ DwellTimer::DwellTimer(double dwell_time, double radius)
 void DwellTimer::reset() {
   target_ = kNoTarget;
   fired_target_ = kNoTarget;
+  resting_ = false;
+}
+
+void DwellTimer::rest(const Eigen::Vector2d& pointer) {
+  reset();
+  resting_ = true;
+  anchor_ = pointer;
 }
 
 DwellTimer::State DwellTimer::update(double now, const Eigen::Vector2d& pointer, int target) {
   State state;
+  if (resting_) {
+    if ((pointer - anchor_).norm() <= radius_) return state;
+    resting_ = false;
+    target_ = kNoTarget;
+  }
   if (target != fired_target_) fired_target_ = kNoTarget;  // it left the chosen target: re-arm
   const bool moved_away = (pointer - anchor_).norm() > radius_;
   if (target != target_ || moved_away) {

@@ -24,12 +24,13 @@ Layout computeLayout(int width, int height, bool with_list) {
   const int stop_w = scaled(0.17, width, 160);
   l.stop = {width - stop_w, 0, stop_w, height};
   const int left_w = width - stop_w;
-  // Two lines of status text at ~1.2 line spacing, and padding.
-  l.status = {0, 0, left_w, static_cast<int>(std::lround(2.45 * l.status_font_px)) + 2 * l.padding};
+  // Two lines of status text (DejaVu's line height is 1.17 em), padding and room for a frame.
+  l.status = {0, 0, left_w,
+              static_cast<int>(std::lround(2.4 * l.status_font_px)) + 2 * l.padding + 16};
   const int prompt_h = scaled(0.135, height, 90);
   l.prompt = {0, height - prompt_h, left_w, prompt_h};
   const int middle_y = l.status.bottom(), middle_h = l.prompt.y - middle_y;
-  const int list_w = with_list ? scaled(0.26, left_w, 200) : 0;
+  const int list_w = with_list ? scaled(0.3, left_w, 220) : 0;
   l.list = {0, middle_y, list_w, middle_h};
   l.map = {list_w, middle_y, left_w - list_w, middle_h};
   const int button_w = scaled(0.3, left_w, 220);

@@ -12,13 +12,13 @@ Theme darkTheme() {
   t.status_background = rgbFromHex("#000000");
   t.status_text = rgbFromHex("#FFFFFF");
   t.floor = rgbFromHex("#2E2E2E");
-  t.wall = rgbFromHex("#E6E6E6");
+  t.wall = rgbFromHex("#A6A6A6");
   t.unknown = rgbFromHex("#000000");
   t.obstacle = rgbFromHex("#FF8C1A");
   t.route = rgbFromHex("#33D6FF");
   t.route_casing = rgbFromHex("#000000");
   t.destination = rgbFromHex("#FFFFFF");
-  t.chair_fill = rgbFromHex("#FFD400");
+  t.chair_fill = rgbFromHex("#FF66CC");
   t.chair_outline = rgbFromHex("#000000");
   t.label_background = rgbFromHex("#000000");
   t.label_text = rgbFromHex("#FFFFFF");
@@ -50,7 +50,7 @@ Theme lightTheme() {
   t.route = rgbFromHex("#0047B3");
   t.route_casing = rgbFromHex("#FFFFFF");
   t.destination = rgbFromHex("#000000");
-  t.chair_fill = rgbFromHex("#005CE6");
+  t.chair_fill = rgbFromHex("#C2185B");
   t.chair_outline = rgbFromHex("#000000");
   t.label_background = rgbFromHex("#FFFFFF");
   t.label_text = rgbFromHex("#000000");

@@ -11,7 +11,6 @@
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "display");
-  QApplication app(argc, argv);
   using wheelchair_display::DisplayNodeConfig;
   DisplayNodeConfig config;
   try {
@@ -20,6 +19,7 @@ int main(int argc, char** argv) {
   } catch (const wheelchair_core::ConfigError&) {
     return 1;  // loadParameters logged why
   }
+  QApplication app(argc, argv);  // after the parameters: a refusal needs no screen
   std::unique_ptr<wheelchair_display::DisplayNode> node;
   try {
     node = std::make_unique<wheelchair_display::DisplayNode>(config);

@@ -284,6 +284,7 @@ void DisplayNode::startRouteCheck(const std::string& destination,
   srv.request.goal.header.frame_id = config_.map_frame;
   srv.request.goal.header.stamp = ros::Time::now();
   srv.request.goal.pose = wheelchair_ros::toPoseMsg(goal);
+  abandonRouteCheck();
   const std::string service = nh_.resolveName(kRouteCheckService);
   if (!ros::service::exists(service, false)) {
     ROS_WARN("display: no route check (%s): the choice is not checked before it is confirmed",
@@ -292,7 +293,7 @@ void DisplayNode::startRouteCheck(const std::string& destination,
     return;
   }
   route_check_ = RouteCheck{
-      goal,
+      goal, ros::WallTime::now().toSec(),
       std::async(std::launch::async,
                  [service, srv]() mutable -> std::optional<wheelchair_msgs::MakePlan::Response> {
                    if (!ros::service::call(service, srv)) return std::nullopt;
@@ -300,13 +301,31 @@ void DisplayNode::startRouteCheck(const std::string& destination,
                  })};
 }
 
+void DisplayNode::abandonRouteCheck() {
+  if (route_check_) abandoned_.push_back(std::move(*route_check_));
+  route_check_.reset();
+}
+
 void DisplayNode::collectRouteCheck() {
-  if (!route_check_ ||
-      route_check_->answer.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+  abandoned_.erase(std::remove_if(abandoned_.begin(), abandoned_.end(),
+                                  [](const RouteCheck& c) {
+                                    return !c.answer.valid() ||
+                                           c.answer.wait_for(std::chrono::seconds(0)) ==
+                                               std::future_status::ready;
+                                  }),
+                   abandoned_.end());
+  if (!route_check_) return;
+  if (route_check_->answer.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+    if (ros::WallTime::now().toSec() - route_check_->started < config_.route_check_timeout) return;
+    ROS_WARN("display: no answer from the route check within %.1f s", config_.route_check_timeout);
+    const auto goal = route_check_->goal;
+    abandonRouteCheck();
+    drive_.checked(goal, true, std::nan(""), "", ros::Time::now().toSec());
     return;
+  }
   const auto answer = route_check_->answer.get();
   const auto goal = route_check_->goal;
-  route_check_.reset();
+  route_check_.reset();  // answered: its future no longer waits
   const double now = ros::Time::now().toSec();
   if (!answer) {
     ROS_WARN("display: the route check did not answer");
@@ -335,7 +354,12 @@ void DisplayNode::confirm() {
 void DisplayNode::stop() {
   stop_pub_.publish(std_msgs::Empty());
   drive_.riderStopped(ros::Time::now().toSec());
-  route_check_.reset();
+  abandonRouteCheck();
+}
+
+void DisplayNode::withdraw() {
+  drive_.cancelChoice();
+  abandonRouteCheck();
 }
 
 void DisplayNode::setPose(const wheelchair_core::Pose2D& pose) {

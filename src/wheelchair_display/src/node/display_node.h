@@ -71,8 +71,9 @@ class DisplayNode {
   void closeRoom() { pointer_room_.clear(); }
   void choosePlace(size_t index);
   void chooseSpot(const Eigen::Vector2d& world);
-  void confirm();  ///< drive to the checked choice
-  void stop();     ///< stops the chair (or withdraws a choice)
+  void confirm();   ///< drive to the checked choice
+  void stop();      ///< stops the chair (and withdraws a choice)
+  void withdraw();  ///< withdraws a choice not yet confirmed (nothing is sent)
 
   // The carer's actions; each returns "" or what went wrong.
   void setPose(const wheelchair_core::Pose2D& pose);
@@ -126,9 +127,14 @@ class DisplayNode {
 
   struct RouteCheck {
     wheelchair_core::Pose2D goal;
+    double started = 0.0;  ///< [s, wall]
     std::future<std::optional<wheelchair_msgs::MakePlan::Response>> answer;
   };
   std::optional<RouteCheck> route_check_;
+  /// Checks whose answer no longer matters: a std::async future blocks in its destructor until
+  /// the call returns, so they wait here (never in the Qt thread) until they are done.
+  std::vector<RouteCheck> abandoned_;
+  void abandonRouteCheck();
 
   ros::Publisher goal_pub_, stop_pub_, initial_pose_pub_, said_pub_, status_pub_, view_pub_;
   std::vector<double> last_view_;

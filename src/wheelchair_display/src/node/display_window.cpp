@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace wheelchair_display {
 namespace {
@@ -74,17 +75,39 @@ void DisplayWindow::onTick() {
   const double now = clock_.elapsed() / 1000.0;
   if (pointer_inside_ && carer_ != CarerMode::kSetPose) {
     dwell_state_ =
-        dwell_.update(now, Eigen::Vector2d(pointer_.x(), pointer_.y()), targetAt(pointer_));
+        dwell_.update(now, Eigen::Vector2d(pointer_.x(), pointer_.y()), targetAt(pointer_, true));
     if (dwell_state_.fired) activate(dwell_state_.target, pointer_);
   } else {
     dwell_state_ = DwellTimer::State();
   }
-  update();
+  // Software rendering on an old chair PC: repaint only when something visible changed.
+  std::string frame = frameKey(now);
+  if (frame != last_frame_ || dwell_state_.progress > 0.0 || holding_carer_ || pose_anchor_)
+    update();
+  last_frame_ = std::move(frame);
+}
+
+std::string DisplayWindow::frameKey(double now) const {
+  const Message m = node_.message();
+  const ScanView scan = node_.scan();
+  const auto& pose = node_.chairPose();
+  const auto& drive = node_.drive();
+  char numbers[160];
+  std::snprintf(numbers, sizeof(numbers), "%d|%d|%d|%.0f|%.2f|%.2f|%.2f|%d|%zu|%zu|%d|%d|%lld|%lld",
+                static_cast<int>(scan.state), scan.highlighted, static_cast<int>(scan.items.size()),
+                10 * scan.time_left, pose ? pose->x : -1e9, pose ? pose->y : -1e9,
+                pose ? pose->yaw : 0.0, static_cast<int>(drive.view().phase),
+                drive.routePoses().size(), node_.places().size(), flashOn(now),
+                static_cast<int>(carer_), node_.mapImage().cacheKey(),
+                node_.obstacleImage().cacheKey());
+  return m.status + "|" + m.prompt + "|" + scan.room + "|" + scan.place + "|" +
+         node_.pointerRoom() + "|" + node_.theme().name + "|" +
+         std::to_string(static_cast<int>(node_.orientation())) + "|" + numbers;
 }
 
 // ---- pointer --------------------------------------------------------------------------------
 
-int DisplayWindow::targetAt(const QPointF& p) const {
+int DisplayWindow::targetAt(const QPointF& p, bool for_dwell) const {
   if (carer_panel_->isVisible() && carer_panel_->geometry().contains(p.toPoint())) return kNoTarget;
   for (const auto& [rect, id] : rect_targets_)
     if (rect.contains(p)) return id;
@@ -95,7 +118,7 @@ int DisplayWindow::targetAt(const QPointF& p) const {
     const int room = roomAt(node_.rooms(), world);
     return room >= 0 ? static_cast<int>(TargetKind::kRoom) * kIdScale + room : kNoTarget;
   }
-  if (mode == ViewMode::kRoom && !node_.scan().scanning())
+  if (mode == ViewMode::kRoom && !node_.scan().scanning() && !for_dwell)
     return static_cast<int>(TargetKind::kSpot) * kIdScale;
   return kNoTarget;
 }
@@ -127,12 +150,12 @@ void DisplayWindow::activate(int target, const QPointF& at) {
     case TargetKind::kGo:
       node_.confirm();
       break;
-    case TargetKind::kBack:
-      if (node_.drive().view().phase == DriveView::Phase::kNone) node_.closeRoom();
-      node_.stop();  // withdraws a choice; the chair is not driving here
+    case TargetKind::kBack:  // "All rooms": the overview, a choice not confirmed withdrawn
+      node_.closeRoom();
+      node_.withdraw();
       break;
   }
-  dwell_.reset();
+  dwell_.rest(Eigen::Vector2d(at.x(), at.y()));
 }
 
 void DisplayWindow::stopChair() { node_.stop(); }
@@ -170,7 +193,7 @@ void DisplayWindow::mousePressEvent(QMouseEvent* event) {
     pose_drag_ = p;
     return;
   }
-  activate(targetAt(p), p);
+  activate(targetAt(p, false), p);
 }
 
 void DisplayWindow::mouseReleaseEvent(QMouseEvent* event) {
@@ -318,7 +341,13 @@ void DisplayWindow::paintMap(QPainter& painter, double now) {
                          static_cast<int>(std::ceil(size.height())));
       levels.push_back(h);
     }
-    const auto labels = placeLabels(anchors, sizes, area.adjusted(4), static_cast<int>(dot) + 4);
+    if (goal && mode == ViewMode::kDrive)  // under the names, which stay readable
+      drawDestination(painter, theme, qpoint(view_.toScreen(goal->position())),
+                      std::max(14.0, 0.3 * view_.scale));
+    const int gap =
+        static_cast<int>(mode == ViewMode::kDrive ? std::max(14.0, 0.3 * view_.scale) * 1.4 : dot) +
+        4;
+    const auto labels = placeLabels(anchors, sizes, area.adjusted(4), gap);
     for (size_t k = 0; k < shown.size(); ++k) {
       drawPlaceDot(painter, theme, qpoint(anchors[k]), dot, levels[k]);
       const Rect& r = labels[k].rect;
@@ -339,9 +368,6 @@ void DisplayWindow::paintMap(QPainter& painter, double now) {
   for (const auto& p : node_.drive().routePoses())
     route.push_back(qpoint(view_.toScreen(p.position())));
   drawRoute(painter, theme, route, std::max(6.0, 0.1 * view_.scale));
-  if (goal && mode == ViewMode::kDrive)
-    drawDestination(painter, theme, qpoint(view_.toScreen(goal->position())),
-                    std::max(14.0, 0.3 * view_.scale));
   if (pose) {
     std::vector<QPointF> outline;
     for (const auto& p : footprint) outline.push_back(qpoint(view_.toScreen(p)));
@@ -373,30 +399,18 @@ void DisplayWindow::paintStatus(QPainter& painter, const Message& message) {
   const Theme& theme = node_.theme();
   const Rect& r = layout_.status;
   painter.fillRect(r.x, r.y, r.w, r.h, qcolor(theme.status_background));
-  const double icon = 0.8 * layout_.status_font_px;
-  double text_x = r.x + layout_.padding;
+  // Not colour alone: a stop is framed by a thick solid edge, a warning by a dashed one (and
+  // the sentence says it: "Stopped: ...").
   if (message.tone != Message::Tone::kInfo) {
-    const QPointF centre(r.x + layout_.padding + icon / 2 + 4, r.centreY());
     const bool stopped = message.tone == Message::Tone::kStopped;
-    painter.setPen(QPen(qcolor(theme.status_text), 4.0));
-    painter.setBrush(qcolor(stopped ? theme.stop_background : theme.status_background));
-    painter.drawPolygon(stopped ? signShape(centre, icon / 2, 8, M_PI / 8)
-                                : signShape(centre, icon / 2, 3, M_PI / 2));
-    painter.setFont(riderFont(static_cast<int>(icon * 0.55), true));
-    painter.setPen(qcolor(stopped ? theme.stop_text : theme.status_text));
-    painter.drawText(QRectF(centre.x() - icon / 2,
-                            centre.y() - icon / 2 + (stopped ? 0 : icon * 0.12), icon, icon),
-                     Qt::AlignCenter, stopped ? "" : "!");
-    text_x += icon + 2 * layout_.padding;
-    if (stopped) {  // the whole line framed: not colour alone
-      painter.setBrush(Qt::NoBrush);
-      painter.setPen(QPen(qcolor(theme.status_text), 4.0));
-      painter.drawRect(QRectF(r.x + 2, r.y + 2, r.w - 4, r.h - 4));
-    }
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(QPen(qcolor(theme.status_text), stopped ? 6.0 : 4.0,
+                        stopped ? Qt::SolidLine : Qt::DashLine));
+    painter.drawRect(QRectF(r.x + 3, r.y + 3, r.w - 6, r.h - 6));
   }
   painter.setPen(qcolor(theme.status_text));
-  const QRectF text(text_x, r.y + layout_.padding, r.right() - text_x - layout_.padding,
-                    r.h - 2 * layout_.padding);
+  const double inset = layout_.padding + 8;
+  const QRectF text(r.x + inset, r.y + inset, r.w - 2 * inset, r.h - 2 * inset);
   drawFittedText(painter, text, qs(message.status), layout_.status_font_px, 48, true,
                  Qt::AlignLeft | Qt::AlignVCenter);
 }
@@ -408,14 +422,25 @@ void DisplayWindow::paintList(QPainter& painter) {
   painter.fillRect(r.x, r.y, r.w, r.h, qcolor(theme.background));
   painter.setPen(QPen(qcolor(theme.label_border), 2.0));
   painter.drawLine(r.right() - 1, r.y, r.right() - 1, r.bottom());
-  const int px = layout_.list_font_px;
-  const double row = 1.7 * px;
   std::vector<std::string> items = scan.items;
   int lit = scan.highlighted;
   if (scan.state == ScanView::State::kConfirming) {
     items = {scan.place};
     lit = 0;
   }
+  // One size for every item: the largest at which the longest name fits.
+  int px = layout_.list_font_px;
+  const auto widest = [&](int size) {
+    double w = 0;
+    for (const auto& item : items)
+      w = std::max(
+          w,
+          QFontMetricsF(riderFont(size, true)).horizontalAdvance("\u25B6 " + qs(riderName(item))));
+    return w;
+  };
+  // Not below 26 px: a longer name is cut short with "..." (the map's plate shows it whole).
+  while (px > 26 && widest(px) > r.w - 2 * layout_.padding - 16) --px;
+  const double row = 1.7 * layout_.list_font_px;
   const int visible = std::max(1, static_cast<int>((r.h - 2 * layout_.padding) / row));
   const int first =
       std::clamp(lit - visible / 2, 0, std::max(0, static_cast<int>(items.size()) - visible));
@@ -438,8 +463,11 @@ void DisplayWindow::paintList(QPainter& painter) {
     }
     painter.setPen(qcolor(on ? theme.highlight_text : theme.text));
     painter.setFont(riderFont(px, on));
-    const QString text = (on ? "\u25B6 " : "  ") + qs(riderName(items[i]));
-    painter.drawText(cell.adjusted(8, 0, -4, -6), Qt::AlignVCenter | Qt::AlignLeft, text);
+    const QRectF text_box = cell.adjusted(8, 0, -4, -6);
+    const QString text = QFontMetricsF(riderFont(px, on))
+                             .elidedText((on ? "\u25B6 " : "  ") + qs(riderName(items[i])),
+                                         Qt::ElideRight, text_box.width());
+    painter.drawText(text_box, Qt::AlignVCenter | Qt::AlignLeft, text);
   }
 }
 
@@ -490,14 +518,16 @@ void DisplayWindow::paintStop(QPainter& painter) {
   const Theme& theme = node_.theme();
   const Rect& s = layout_.stop;
   painter.fillRect(s.x, s.y, s.w, s.h, qcolor(theme.stop_background));
-  const QPointF centre(s.centreX(), s.centreY());
-  const double radius = 0.42 * s.w;
-  painter.setPen(QPen(qcolor(theme.stop_text), 6.0));
-  painter.setBrush(Qt::NoBrush);
-  painter.drawPolygon(signShape(centre, radius, 8, M_PI / 8));
+  // A stop sign's octagon above the word; the word as large as the area's width allows.
+  const QPointF centre(s.centreX(), s.centreY() - 0.3 * s.w);
+  painter.setPen(Qt::NoPen);
+  painter.setBrush(qcolor(theme.stop_text));
+  painter.drawPolygon(signShape(centre, 0.3 * s.w, 8, M_PI / 8));
+  int px = layout_.stop_font_px;
+  while (px > 24 && QFontMetricsF(riderFont(px, true)).horizontalAdvance("STOP") > 0.86 * s.w) --px;
   painter.setPen(qcolor(theme.stop_text));
-  painter.setFont(riderFont(std::min(layout_.stop_font_px, static_cast<int>(0.3 * s.w)), true));
-  painter.drawText(QRectF(s.x, centre.y() - radius, s.w, 2 * radius), Qt::AlignCenter, "STOP");
+  painter.setFont(riderFont(px, true));
+  painter.drawText(QRectF(s.x, s.centreY() + 0.05 * s.w, s.w, 1.4 * px), Qt::AlignCenter, "STOP");
 }
 
 // ---- the carer's tools ------------------------------------------------------------------------
@@ -602,6 +632,9 @@ void DisplayWindow::placeCarerPanel() {
   const Theme& t = node_.theme();
   const Rect& r = layout_.list;
   carer_panel_->setGeometry(r.x, r.y, r.w, r.h);
+  // Fixed heights: every control as tall as two lines of its text.
+  const int font = std::max(22, layout_.label_font_px);
+  for (auto* child : carer_panel_->findChildren<QWidget*>()) child->setFixedHeight(font * 2);
   const QString style =
       QString(
           "QWidget { background: %1; color: %2; font-family: 'DejaVu Sans'; font-size: %3px; }"
@@ -609,7 +642,7 @@ void DisplayWindow::placeCarerPanel() {
           "QPushButton:disabled { color: %2; border-style: dashed; }"
           "QLineEdit, QComboBox { border: 3px solid %4; padding: 4px; }")
           .arg(qs(toHex(t.background)), qs(toHex(t.text)))
-          .arg(std::max(22, layout_.label_font_px))
+          .arg(font)
           .arg(qs(toHex(t.label_border)));
   if (carer_panel_->styleSheet() != style) carer_panel_->setStyleSheet(style);
 }

@@ -1,9 +1,9 @@
 // The rider's window: draws the DisplayNode's state into the layout (status line, map, list,
 // prompt with the Go button, the full-height STOP area) and turns the pointer into choices:
 // a click, or a pointer resting for the dwell time (the ring fills), on a room opens it, on a
-// place or a spot of free floor chooses it, on Go confirms it; pressing or (stop_on_hover)
-// entering the STOP area stops the chair. The carer's tools open only after holding the small
-// Carer button for carer_hold seconds, which neither a dwell nor the switch can do.
+// place chooses it, on Go confirms it (a click on free floor chooses that spot); pressing or
+// (stop_on_hover) entering the STOP area stops the chair. The carer's tools open only after holding
+// the small Carer button for carer_hold seconds, which neither a dwell nor the switch can do.
 #pragma once
 
 #include "display_node.h"
@@ -43,8 +43,11 @@ class DisplayWindow : public QWidget {
   enum class ViewMode { kOverview, kRoom, kDrive };
 
   void onTick();
-  /// The dwell id of what is under `p` (kind * 10000 + index), or kNoTarget.
-  int targetAt(const QPointF& p) const;
+  /// What the next frame would show, in short: no repaint while it stays the same.
+  std::string frameKey(double now) const;
+  /// The dwell id of what is under `p` (kind * 10000 + index), or kNoTarget. A spot of bare
+  /// floor is chosen by a click only: a pointer resting on the map to look is not a choice.
+  int targetAt(const QPointF& p, bool for_dwell) const;
   void activate(int target, const QPointF& at);
   void stopChair();
 
@@ -73,6 +76,7 @@ class DisplayWindow : public QWidget {
   bool in_stop_ = false;
   std::vector<std::pair<QRectF, int>> rect_targets_;  ///< plates and buttons drawn this frame
   QElapsedTimer clock_;
+  std::string last_frame_;
 
   CarerMode carer_ = CarerMode::kClosed;
   bool holding_carer_ = false;

@@ -27,6 +27,7 @@ LegacyDriveSource::LegacyDriveSource(ros::NodeHandle& nh, DriveTracker& tracker,
   subs_.push_back(nh.subscribe("plan_certificate", 2, &LegacyDriveSource::onCertificate, this));
   subs_.push_back(
       nh.subscribe("controller/path_status", 10, &LegacyDriveSource::onPathStatus, this));
+  subs_.push_back(nh.subscribe("user_stop", 5, &LegacyDriveSource::onUserStop, this));
 }
 
 void LegacyDriveSource::expectOwnGoal(const std::string& destination,
@@ -59,6 +60,10 @@ void LegacyDriveSource::onCertificate(const wheelchair_msgs::PlanCertificate::Co
     ROS_INFO("display: the planner refused the goal: %s", msg->failure_reason.c_str());
     tracker_.refused(ros::Time::now().toSec());
   }
+}
+
+void LegacyDriveSource::onUserStop(const std_msgs::Empty::ConstPtr&) {
+  tracker_.riderStopped(ros::Time::now().toSec());
 }
 
 void LegacyDriveSource::onPathStatus(const actionlib_msgs::GoalStatus::ConstPtr& msg) {

@@ -1,8 +1,8 @@
 // Where the display learns about drives today: any goal on /move_base_simple/goal (the display's,
 // the HMI's, rviz's), the planner's /plan and /plan_certificate, and the controller's path
-// status. When the navigator (issue 22) owns drives, this file is replaced by a client of its
-// move_base action (goal, feedback with the distance left, one result with a rider sentence);
-// the DriveTracker it feeds stays as it is.
+// status, and any /user_stop. When the navigator (issue 22) owns drives, this file is replaced by a
+// client of its move_base action (goal, feedback with the distance left, one result with a rider
+// sentence); the DriveTracker it feeds stays as it is.
 #pragma once
 
 #include <wheelchair_display/drive_tracker.h>
@@ -12,6 +12,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
+#include <std_msgs/Empty.h>
 #include <wheelchair_msgs/PlanCertificate.h>
 
 #include <optional>
@@ -32,6 +33,8 @@ class LegacyDriveSource {
   void onPath(const nav_msgs::Path::ConstPtr& msg);
   void onCertificate(const wheelchair_msgs::PlanCertificate::ConstPtr& msg);
   void onPathStatus(const actionlib_msgs::GoalStatus::ConstPtr& msg);
+  /// A stop from anyone (this display, another, the HMI's switch): the rider stopped the drive.
+  void onUserStop(const std_msgs::Empty::ConstPtr&);
   /// The name of the place at `goal`, the display's own destination, or "" (a spot).
   std::string nameOf(const wheelchair_core::Pose2D& goal) const;
 
