@@ -357,8 +357,10 @@ void DisplayWindow::paintMap(QPainter& painter, double now) {
       if (mode == ViewMode::kRoom && !scan.scanning()) {
         const int id = static_cast<int>(TargetKind::kPlace) * kIdScale + static_cast<int>(shown[k]);
         rect_targets_.emplace_back(rect, id);
+        // A place's dot wins over a neighbour's name plate lying across it.
         const QPointF c = qpoint(anchors[k]);
-        rect_targets_.emplace_back(QRectF(c.x() - 2 * dot, c.y() - 2 * dot, 4 * dot, 4 * dot), id);
+        rect_targets_.insert(rect_targets_.begin(),
+                             {QRectF(c.x() - 2 * dot, c.y() - 2 * dot, 4 * dot, 4 * dot), id});
       }
     }
   }
