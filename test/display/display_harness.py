@@ -263,11 +263,18 @@ def status_text_measures(band, first_letter, theme, inset=14):
     inner = band[inset:-inset, inset:-inset]
     background = np.asarray(theme["background"])
     ink = np.abs(inner.astype(int) - background).sum(axis=2) > 90
-    cols = np.nonzero(ink.any(axis=0))[0]
-    if len(cols) == 0:
+    # The first line: the first run of inked rows (lines are apart by the line spacing).
+    inked_rows = np.nonzero(ink.any(axis=1))[0]
+    if len(inked_rows) == 0:
         return 0, 0, 1.0
+    last = inked_rows[0]
+    while last + 1 < ink.shape[0] and ink[last + 1].any():
+        last += 1
+    first_line = np.zeros_like(ink)
+    first_line[inked_rows[0]:last + 1] = ink[inked_rows[0]:last + 1]
+    cols = np.nonzero(first_line.any(axis=0))[0]
     # The first glyph: the ink connected to the leftmost inked pixel (8-neighbours).
-    ys = np.nonzero(ink[:, cols[0]])[0]
+    ys = np.nonzero(first_line[:, cols[0]])[0]
     seen = np.zeros_like(ink)
     stack = [(int(ys[0]), int(cols[0]))]
     seen[stack[0]] = True
@@ -278,8 +285,8 @@ def status_text_measures(band, first_letter, theme, inset=14):
         for dy in (-1, 0, 1):
             for dx in (-1, 0, 1):
                 yy, xx = y + dy, x + dx
-                if 0 <= yy < ink.shape[0] and 0 <= xx < ink.shape[1] and ink[yy, xx] and \
-                        not seen[yy, xx]:
+                if 0 <= yy < ink.shape[0] and 0 <= xx < ink.shape[1] and \
+                        first_line[yy, xx] and not seen[yy, xx]:
                     seen[yy, xx] = True
                     stack.append((yy, xx))
     measured = max(rows) - min(rows) + 1
