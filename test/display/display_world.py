@@ -2,6 +2,8 @@
 and the typed-status topics the display is remapped to while the stack still publishes strings
 on /safety/status and /kld/localized (the redesign switches them to the typed messages; then
 these remaps go)."""
+import os
+
 import yaml
 
 from scenario import WORLDS
@@ -56,3 +58,15 @@ def back_plate(view):
     """A point on the "All rooms" plate (top left of the map region)."""
     x0, y0, w, h = view.map_region
     return x0 + 40, y0 + 30
+
+
+def test_output(name, folder=None):
+    """The folder for a test's screenshots and logs (`folder`, else $ROS_HOME/<name>), and in it
+    a copy of flat's places file for the display (the carer's tools may edit it; the world
+    stays as it is)."""
+    out = folder or os.path.join(os.environ.get("ROS_HOME", "/tmp"), name)
+    os.makedirs(out, exist_ok=True)
+    places_copy = os.path.join(out, "flat.places.yaml")
+    with open(f"{WORLDS}/flat.places.yaml") as f, open(places_copy, "w") as g:
+        g.write(f.read())
+    return out, places_copy

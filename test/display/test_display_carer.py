@@ -20,8 +20,8 @@ from geometry_msgs.msg import PoseWithCovarianceStamped
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "system"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from display_harness import THEMES, Display, colour_mask  # noqa: E402
-from display_world import REMAPS, START, room_point  # noqa: E402
-from scenario import WORLDS, Scenario, yaw_of  # noqa: E402
+from display_world import REMAPS, room_point, test_output  # noqa: E402
+from scenario import Scenario, yaw_of  # noqa: E402
 
 W, H = 1024, 768
 
@@ -29,11 +29,7 @@ W, H = 1024, 768
 class DisplayCarer(unittest.TestCase):
     def setUp(self):
         self.s = Scenario("test_display_carer")
-        self.out = os.path.join(os.environ.get("ROS_HOME", "/tmp"), "display_carer")
-        os.makedirs(self.out, exist_ok=True)
-        self.places_file = os.path.join(self.out, "flat.places.yaml")
-        with open(f"{WORLDS}/flat.places.yaml") as f, open(self.places_file, "w") as g:
-            g.write(f.read())
+        self.out, self.places_file = test_output("display_carer")
         self.initial_poses = []
         self.sub = rospy.Subscriber("/initialpose", PoseWithCovarianceStamped,
                                     self.initial_poses.append)

@@ -10,7 +10,6 @@ import sys
 import time
 import unittest
 
-import numpy as np
 import rospy
 import rostest
 
@@ -18,8 +17,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from display_harness import THEMES, Display, colour_mask  # noqa: E402
 from display_world import (REMAPS, START, back_plate, go_button, place_pose, place_xy,  # noqa
-                           room_point)
-from scenario import WORLDS, Scenario  # noqa: E402
+                           room_point, test_output)
+from scenario import Scenario  # noqa: E402
 
 DWELL = 1.5  # the display's default dwell time [s]
 
@@ -27,11 +26,7 @@ DWELL = 1.5  # the display's default dwell time [s]
 class DisplayPointer(unittest.TestCase):
     def setUp(self):
         self.s = Scenario("test_display_pointer")
-        self.out = os.path.join(os.environ.get("ROS_HOME", "/tmp"), "display_pointer")
-        os.makedirs(self.out, exist_ok=True)
-        places_copy = os.path.join(self.out, "flat.places.yaml")
-        with open(f"{WORLDS}/flat.places.yaml") as f, open(places_copy, "w") as g:
-            g.write(f.read())
+        self.out, places_copy = test_output("display_pointer")
         self.d = Display("display", (1024, 768), places_copy, {"theme": "dark"}, REMAPS, self.out)
 
     def tearDown(self):

@@ -22,7 +22,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from display_harness import (THEMES, Display, colour_mask, footprint_offset, load_map,  # noqa
                              map_shows_map, status_band, status_text_measures)
 from display_world import (FOOTPRINT, REMAPS, SAFETY_TOPIC, START, go_button, place_xy,  # noqa
-                           places, room_box, room_point)
+                           places, room_box, room_point, test_output)
 from scenario import WORLDS, Scenario  # noqa: E402
 from wheelchair_msgs.msg import HmiState, SafetyStatus  # noqa: E402
 
@@ -30,15 +30,12 @@ from wheelchair_msgs.msg import HmiState, SafetyStatus  # noqa: E402
 class DisplayScreens(unittest.TestCase):
     def setUp(self):
         self.s = Scenario("test_display_screens")
-        self.shots = os.environ.get("WHEELCHAIR_DISPLAY_SHOTS") or os.path.join(
-            os.environ.get("ROS_HOME", "/tmp"), "display_shots")
-        os.makedirs(self.shots, exist_ok=True)
+        # WHEELCHAIR_DISPLAY_SHOTS: where the demo wants the screenshots.
+        self.shots, places_copy = test_output("display_shots",
+                                              os.environ.get("WHEELCHAIR_DISPLAY_SHOTS"))
         self.grid = load_map(f"{WORLDS}/flat.yaml")
         self.hmi = rospy.Publisher("/hmi/state", HmiState, queue_size=1, latch=True)
         self.safety = rospy.Publisher(SAFETY_TOPIC, SafetyStatus, queue_size=1, latch=True)
-        places_copy = os.path.join(self.shots, "flat.places.yaml")
-        with open(f"{WORLDS}/flat.places.yaml") as f, open(places_copy, "w") as g:
-            g.write(f.read())
         self.displays = [
             Display("display_small", (1024, 768), places_copy, {"theme": "dark"}, REMAPS),
             Display("display_large", (1920, 1080), places_copy, {"theme": "light"}, REMAPS)]

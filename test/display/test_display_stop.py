@@ -14,18 +14,14 @@ import rostest
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "system"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from display_harness import Display  # noqa: E402
-from display_world import REMAPS, START  # noqa: E402
-from scenario import WORLDS, Scenario  # noqa: E402
+from display_world import REMAPS, START, test_output  # noqa: E402
+from scenario import Scenario  # noqa: E402
 
 
 class DisplayStop(unittest.TestCase):
     def setUp(self):
         self.s = Scenario("test_display_stop")
-        self.out = os.path.join(os.environ.get("ROS_HOME", "/tmp"), "display_stop")
-        os.makedirs(self.out, exist_ok=True)
-        places_copy = os.path.join(self.out, "flat.places.yaml")
-        with open(f"{WORLDS}/flat.places.yaml") as f, open(places_copy, "w") as g:
-            g.write(f.read())
+        self.out, places_copy = test_output("display_stop")
         self.d = Display("display", (1024, 768), places_copy, {}, REMAPS, self.out)
 
     def tearDown(self):

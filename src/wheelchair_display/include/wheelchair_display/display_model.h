@@ -29,39 +29,19 @@ struct ScanView {
   }
 };
 
-/// wheelchair_msgs/LocalizationStatus (kUnknown: none received yet).
+/// wheelchair_msgs/LocalizationStatus: only whether the chair can be driven on, and the
+/// localizer's own words for the rider (its table of reasons is the localizer's, not ours).
 struct LocalizationView {
-  enum class State {
-    kUnknown,
-    kUninitialized,
-    kLocalizing,
-    kLocalized,
-    kAmbiguous,
-    kUncertain,
-    kMisfit,
-    kNoData
-  };
+  enum class State { kUnknown, kLocalized, kNotLocalized };  ///< kUnknown: none received yet
   State state = State::kUnknown;
-  std::string sentence;  ///< the localizer's words for the rider (may be empty)
+  std::string sentence;
 };
 
-/// wheelchair_msgs/SafetyStatus (known false: none received yet).
+/// wheelchair_msgs/SafetyStatus: a stop and the supervisor's own words for it.
 struct SafetyView {
-  enum class Reason {
-    kNone,
-    kNoData,
-    kLocalizationLost,
-    kCovarianceTooLarge,
-    kLaserSilent,
-    kPoseStale,
-    kObstacle,
-    kDriverFault,
-    kUserStop
-  };
-  bool known = false;
-  bool stop = false;
-  Reason reason = Reason::kNone;
-  std::string sentence;
+  bool known = false;    ///< a status was received
+  bool stop = false;     ///< a stop for a reason other than waiting for the first data
+  std::string sentence;  ///< the supervisor's sentence for the rider
 };
 
 /// The drive the display shows: a destination being checked, the drive, and its outcome.

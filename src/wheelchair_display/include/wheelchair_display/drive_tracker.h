@@ -56,6 +56,9 @@ class DriveTracker {
   const std::vector<wheelchair_core::Pose2D>& routePoses() const { return route_; }
 
  private:
+  /// A new choice or drive: what was shown before is forgotten.
+  void begin(DriveView::Phase phase, const std::string& destination,
+             const wheelchair_core::Pose2D& goal);
   void end(DriveView::Phase phase, const std::string& sentence, double now);
 
   double outcome_hold_;

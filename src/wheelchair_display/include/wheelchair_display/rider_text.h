@@ -14,11 +14,6 @@ std::string riderName(const std::string& id);
 /// "3.2 m" below 10 m, "12 m" from there.
 std::string distanceText(double metres);
 
-/// The rider's words for a supervisor stop reason / a localizer state (used when the message
-/// carries no sentence of its own).
-std::string safetySentence(SafetyView::Reason reason);
-std::string localizationSentence(LocalizationView::State state);
-
 struct Message {
   enum class Tone { kInfo, kAttention, kStopped };
   std::string status;  ///< what the chair is doing and why

@@ -40,12 +40,18 @@ double remainingLength(const std::vector<Pose2D>& path, const Eigen::Vector2d& p
   return std::max(0.0, left);
 }
 
-void DriveTracker::check(const std::string& destination, const Pose2D& goal, double) {
+void DriveTracker::begin(Phase phase, const std::string& destination, const Pose2D& goal) {
   view_ = DriveView();
-  view_.phase = Phase::kChecking;
+  view_.phase = phase;
   view_.destination = destination;
   goal_ = goal;
   route_.clear();
+  segment_ = 0;
+  position_.reset();
+}
+
+void DriveTracker::check(const std::string& destination, const Pose2D& goal, double) {
+  begin(Phase::kChecking, destination, goal);
 }
 
 void DriveTracker::checked(const Pose2D& goal, bool reachable, double length,
@@ -68,12 +74,7 @@ void DriveTracker::cancelChoice() {
 }
 
 void DriveTracker::goal(const std::string& destination, const Pose2D& goal, double) {
-  view_ = DriveView();
-  view_.phase = Phase::kDriving;
-  view_.destination = destination;
-  goal_ = goal;
-  route_.clear();
-  segment_ = 0;
+  begin(Phase::kDriving, destination, goal);
 }
 
 void DriveTracker::route(const std::vector<Pose2D>& poses, double now) {

@@ -108,51 +108,6 @@ std::string distanceText(double metres) {
   return text;
 }
 
-std::string safetySentence(SafetyView::Reason reason) {
-  using R = SafetyView::Reason;
-  switch (reason) {
-    case R::kNone:
-      return "";
-    case R::kNoData:
-      return "Waiting for the sensors.";
-    case R::kLocalizationLost:
-      return "Stopped: I lost track of where the chair is.";
-    case R::kCovarianceTooLarge:
-      return "Stopped: I am not sure where the chair is.";
-    case R::kLaserSilent:
-      return "Stopped: the laser scanner is silent.";
-    case R::kPoseStale:
-      return "Stopped: the chair's position is out of date.";
-    case R::kObstacle:
-      return "Stopped: something is in the way.";
-    case R::kDriverFault:
-      return "Stopped: the motors report a fault.";
-    case R::kUserStop:
-      return "Stopped: you pressed stop.";
-  }
-  return "Stopped.";
-}
-
-std::string localizationSentence(LocalizationView::State state) {
-  switch (state) {
-    case Loc::kUnknown:
-    case Loc::kUninitialized:
-      return "I don't know where the chair is yet.";
-    case Loc::kLocalizing:
-      return "Finding where the chair is.";
-    case Loc::kLocalized:
-      return "";
-    case Loc::kAmbiguous:
-    case Loc::kUncertain:
-      return "I am not sure where the chair is.";
-    case Loc::kMisfit:
-      return "I lost track of where the chair is.";
-    case Loc::kNoData:
-      return "Waiting for the sensors.";
-  }
-  return "";
-}
-
 Message describe(const DisplayInputs& in) {
   Message m;
   const std::string scan_prompt = scanPrompt(in.scan);
@@ -160,18 +115,17 @@ Message describe(const DisplayInputs& in) {
     m.status = "Waiting for the map.";
     return m;
   }
-  if (in.safety.known && in.safety.stop && in.safety.reason != SafetyView::Reason::kNoData) {
-    m.status = orDefault(in.safety.sentence, safetySentence(in.safety.reason));
+  // The supervisor's and the localizer's own sentences; ours only when they give none.
+  if (in.safety.known && in.safety.stop) {
+    m.status = orDefault(in.safety.sentence, "Stopped.");
     m.tone = Message::Tone::kStopped;
     m.prompt = scan_prompt.empty() ? "Choose where to go to drive on." : scan_prompt;
     return m;
   }
-  const bool lost =
-      in.localization.state != Loc::kUnknown && in.localization.state != Loc::kLocalized;
+  const bool lost = in.localization.state == Loc::kNotLocalized;
   if (lost || !in.have_pose) {
-    m.status =
-        lost ? orDefault(in.localization.sentence, localizationSentence(in.localization.state))
-             : localizationSentence(Loc::kUnknown);
+    m.status = lost ? orDefault(in.localization.sentence, "I am not sure where the chair is.")
+                    : "I don't know where the chair is yet.";
     m.tone = Message::Tone::kAttention;
     m.prompt = "A carer can set the chair's position.";
     return m;

@@ -40,52 +40,6 @@ ScanView::State scanStateOf(uint8_t state) {
   }
 }
 
-LocalizationView::State localizationStateOf(uint8_t state) {
-  using M = wheelchair_msgs::LocalizationStatus;
-  using S = LocalizationView::State;
-  switch (state) {
-    case M::UNINITIALIZED:
-      return S::kUninitialized;
-    case M::LOCALIZING:
-      return S::kLocalizing;
-    case M::LOCALIZED:
-      return S::kLocalized;
-    case M::AMBIGUOUS:
-      return S::kAmbiguous;
-    case M::UNCERTAIN:
-      return S::kUncertain;
-    case M::MISFIT:
-      return S::kMisfit;
-    default:
-      return S::kNoData;
-  }
-}
-
-SafetyView::Reason safetyReasonOf(uint8_t reason) {
-  using M = wheelchair_msgs::SafetyStatus;
-  using R = SafetyView::Reason;
-  switch (reason) {
-    case M::NONE:
-      return R::kNone;
-    case M::NO_DATA:
-      return R::kNoData;
-    case M::LOCALIZATION_LOST:
-      return R::kLocalizationLost;
-    case M::COVARIANCE_TOO_LARGE:
-      return R::kCovarianceTooLarge;
-    case M::LASER_SILENT:
-      return R::kLaserSilent;
-    case M::POSE_STALE:
-      return R::kPoseStale;
-    case M::OBSTACLE:
-      return R::kObstacle;
-    case M::DRIVER_FAULT:
-      return R::kDriverFault;
-    default:
-      return R::kUserStop;
-  }
-}
-
 }  // namespace
 
 DisplayNode::DisplayNode(const DisplayNodeConfig& config)
@@ -229,14 +183,16 @@ void DisplayNode::onHmiState(const wheelchair_msgs::HmiState::ConstPtr& msg) {
 }
 
 void DisplayNode::onLocalization(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg) {
-  localization_.state = localizationStateOf(msg->state);
+  localization_.state = msg->state == wheelchair_msgs::LocalizationStatus::LOCALIZED
+                            ? LocalizationView::State::kLocalized
+                            : LocalizationView::State::kNotLocalized;
   localization_.sentence = msg->sentence;
 }
 
 void DisplayNode::onSafety(const wheelchair_msgs::SafetyStatus::ConstPtr& msg) {
   safety_.known = true;
-  safety_.stop = msg->stop;
-  safety_.reason = safetyReasonOf(msg->reason);
+  // Waiting for the first sensor data is no stop to tell the rider about.
+  safety_.stop = msg->stop && msg->reason != wheelchair_msgs::SafetyStatus::NO_DATA;
   safety_.sentence = msg->sentence;
 }
 
