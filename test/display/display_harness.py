@@ -218,37 +218,50 @@ def load_map(yaml_path):
     return grid
 
 
-def footprint_offset(image, view, pose, footprint, theme, window=60):
-    """[px] how far the chair-coloured pixels' centre lies from where `pose` (x, y, yaw; the
-    simulator's truth) puts the footprint's centre, and the share of the footprint's inside
-    (3 px in from its edges) that is drawn in the chair's colour (or its black heading arrow)."""
-    x, y, yaw = pose
-    c, s = np.cos(yaw), np.sin(yaw)
-    corners = [view.to_screen(x + c * px - s * py, y + s * px + c * py) for px, py in footprint]
-    corners = np.array(corners)
-    centre = corners.mean(axis=0)
-    u0, v0 = (centre - window).astype(int)
-    u1, v1 = (centre + window).astype(int)
-    crop = image[max(0, v0):v1, max(0, u0):u1]
-    mask = colour_mask(crop, theme["chair_fill"], tolerance=20)
-    if mask.sum() == 0:
-        return float("inf"), 0.0
-    vv, uu = np.nonzero(mask)
-    drawn = np.array([uu.mean() + max(0, u0), vv.mean() + max(0, v0)])
-    # The footprint's inside, 3 px in from its edges (a convex polygon: inside every edge).
-    yy, xx = np.mgrid[max(0, v0):v1, max(0, u0):u1]
-    px, py = xx + 0.5, yy + 0.5
-    inside = np.ones(xx.shape, dtype=bool)
+def inside_convex(corners, px, py, margin):
+    """Which of the points (px, py) lie inside the convex polygon `corners` (screen px), at least
+    `margin` px from every edge (a negative margin grows the polygon)."""
     area2 = sum(corners[i - 1][0] * corners[i][1] - corners[i][0] * corners[i - 1][1]
                 for i in range(len(corners)))
+    inside = np.ones(np.shape(px), dtype=bool)
     for i in range(len(corners)):
         a, b = corners[i - 1], corners[i]
         edge = b - a
         cross = (edge[0] * (py - a[1]) - edge[1] * (px - a[0])) / np.linalg.norm(edge)
-        inside &= (cross if area2 > 0 else -cross) >= 3.0
-    fill_or_arrow = mask | colour_mask(crop, (0, 0, 0), tolerance=20)
-    share = fill_or_arrow[inside].mean() if inside.any() else 0.0
-    return float(np.linalg.norm(drawn - centre)), float(share)
+        inside &= (cross if area2 > 0 else -cross) >= margin
+    return inside
+
+
+def footprint_offset(image, view, pose, footprint, theme, window=90):
+    """[px] how far the centre of the chair-coloured pixels lies from the centre of where the
+    display should fill it if the chair stood at `pose` (x, y, yaw: the simulator's truth): the
+    footprint polygon less the heading arrow drawn inside it (map_painter.cpp's drawChair). And
+    the share of that expected fill drawn in the chair's colour."""
+    x, y, yaw = pose
+    c, s = np.cos(yaw), np.sin(yaw)
+    corners = np.array([view.to_screen(x + c * px - s * py, y + s * px + c * py)
+                        for px, py in footprint])
+    centre = view.to_screen(x, y)
+    heading = yaw + view.rotation
+    ahead, side = np.array([np.cos(heading), -np.sin(heading)]), np.array([np.sin(heading),
+                                                                             np.cos(heading)])
+    size = max(12.0, 0.5 * view.scale)
+    arrow = np.array([centre + ahead * size * 0.55, centre - ahead * size * 0.15 + side * size * 0.3,
+                      centre - ahead * size * 0.15 - side * size * 0.3])
+    middle = corners.mean(axis=0)
+    u0, v0 = np.maximum(0, (middle - window).astype(int))
+    u1, v1 = (middle + window).astype(int)
+    crop = image[v0:v1, u0:u1]
+    yy, xx = np.mgrid[v0:v1, u0:u1]
+    px, py = xx[:crop.shape[0], :crop.shape[1]] + 0.5, yy[:crop.shape[0], :crop.shape[1]] + 0.5
+    expected = inside_convex(corners, px, py, 2.0) & ~inside_convex(arrow, px, py, -2.0)
+    drawn = colour_mask(crop, theme["chair_fill"], tolerance=20)
+    if drawn.sum() == 0 or expected.sum() == 0:
+        return float("inf"), 0.0
+    drawn_centre = np.array([px[drawn].mean(), py[drawn].mean()])
+    expected_centre = np.array([px[expected].mean(), py[expected].mean()])
+    return (float(np.linalg.norm(drawn_centre - expected_centre)),
+            float(drawn[expected].mean()))
 
 
 def status_band(image, view):

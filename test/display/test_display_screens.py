@@ -68,7 +68,7 @@ class DisplayScreens(unittest.TestCase):
                 pose = [(a + b) / 2 for a, b in zip(truth_before, truth_after)]
                 offset, share = footprint_offset(image, d.view, pose, FOOTPRINT, theme)
                 # A few pixels: the localizer's estimate against the truth, and motion meanwhile.
-                limit = 3.0 + 0.03 * d.view.scale + moved * d.view.scale
+                limit = 3.0 + 0.02 * d.view.scale + moved * d.view.scale
                 self.assertLess(offset, limit, f"{where}: footprint {offset:.1f} px off")
                 self.assertGreater(share, 0.6, f"{where}: footprint fill {share:.2f}")
                 rospy.loginfo("display %s: footprint %.1f px off (limit %.1f), fill %.2f", where,

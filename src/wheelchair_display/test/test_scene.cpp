@@ -70,6 +70,13 @@ TEST(Scene, ALabelWithNoFreeSpotSaysItCoversAnother) {
   EXPECT_TRUE(labels[3].covers);
 }
 
+TEST(Scene, LabelsKeepClearOfTheChair) {
+  const Rect chair{300, 280, 60, 40};
+  const auto labels = placeLabels({{300, 300}}, {{120, 30}}, {0, 0, 800, 600}, 10, {chair});
+  EXPECT_FALSE(labels[0].covers);
+  EXPECT_FALSE(labels[0].rect.intersects(chair));
+}
+
 TEST(Scene, ALabelAtTheEdgeStaysInside) {
   const auto labels = placeLabels({{790, 5}}, {{120, 30}}, {0, 0, 800, 600}, 10);
   EXPECT_LE(labels[0].rect.right(), 800);

@@ -36,14 +36,15 @@ wheelchair_core::Box knownBounds(const wheelchair_core::OccupancyMap& map);
 
 /// Label boxes for anchors (screen points) in priority order: each at the first of eight places
 /// around its anchor (right, left, above, below, diagonals) that stays inside `bounds` and
-/// covers no earlier label; when none is free, to the right (covering). `sizes` are w x h px.
+/// covers no earlier label and nothing of `keep_clear` (the chair); when none is free, the first
+/// inside `bounds` (covering). `sizes` are w x h px.
 struct LabelBox {
   Rect rect;
   bool covers = false;  ///< it covers an earlier label
 };
 std::vector<LabelBox> placeLabels(const std::vector<Eigen::Vector2d>& anchors,
                                   const std::vector<std::pair<int, int>>& sizes, const Rect& bounds,
-                                  int gap);
+                                  int gap, const std::vector<Rect>& keep_clear = {});
 
 /// The world points the view must show now: the chair (its footprint at `chair`, if known) with
 /// the route and the goal while a drive or a choice is on; else the chosen room's area; else the

@@ -65,7 +65,7 @@ wheelchair_core::Box knownBounds(const wheelchair_core::OccupancyMap& map) {
 
 std::vector<LabelBox> placeLabels(const std::vector<Eigen::Vector2d>& anchors,
                                   const std::vector<std::pair<int, int>>& sizes, const Rect& bounds,
-                                  int gap) {
+                                  int gap, const std::vector<Rect>& keep_clear) {
   std::vector<LabelBox> labels;
   for (size_t i = 0; i < anchors.size(); ++i) {
     const int w = sizes[i].first, h = sizes[i].second;
@@ -80,7 +80,9 @@ std::vector<LabelBox> placeLabels(const std::vector<Eigen::Vector2d>& anchors,
     };
     const auto free = [&](const Rect& r) {
       return std::none_of(labels.begin(), labels.end(),
-                          [&](const LabelBox& l) { return l.rect.intersects(r); });
+                          [&](const LabelBox& l) { return l.rect.intersects(r); }) &&
+             std::none_of(keep_clear.begin(), keep_clear.end(),
+                          [&](const Rect& k) { return k.intersects(r); });
     };
     LabelBox chosen{candidates[0], true};
     bool found = false;

@@ -347,7 +347,17 @@ void DisplayWindow::paintMap(QPainter& painter, double now) {
     const int gap =
         static_cast<int>(mode == ViewMode::kDrive ? std::max(14.0, 0.3 * view_.scale) * 1.4 : dot) +
         4;
-    const auto labels = placeLabels(anchors, sizes, area.adjusted(4), gap);
+    std::vector<Rect> keep_clear;  // the chair stays visible
+    if (pose) {
+      Eigen::Vector2d lo(1e9, 1e9), hi(-1e9, -1e9);
+      for (const auto& p : footprint) {
+        lo = lo.cwiseMin(view_.toScreen(p));
+        hi = hi.cwiseMax(view_.toScreen(p));
+      }
+      keep_clear.push_back({static_cast<int>(lo.x()), static_cast<int>(lo.y()),
+                            static_cast<int>(hi.x() - lo.x()), static_cast<int>(hi.y() - lo.y())});
+    }
+    const auto labels = placeLabels(anchors, sizes, area.adjusted(4), gap, keep_clear);
     for (size_t k = 0; k < shown.size(); ++k) {
       drawPlaceDot(painter, theme, qpoint(anchors[k]), dot, levels[k]);
       const Rect& r = labels[k].rect;
@@ -376,6 +386,19 @@ void DisplayWindow::paintMap(QPainter& painter, double now) {
     const double size = std::max(12.0, 0.5 * view_.scale);
     drawChair(painter, theme, outline, qpoint(view_.toScreen(pose->position())),
               view_.screenHeading(pose->yaw), size);
+  }
+  // Where a refused choice was: a cross (the sentence says why).
+  if (goal && phase == DriveView::Phase::kRefused) {
+    const QPointF at = qpoint(view_.toScreen(goal->position()));
+    const double r = std::max(12.0, 0.25 * view_.scale);
+    painter.save();
+    for (const auto& [colour, width] :
+         {std::make_pair(theme.route_casing, 12.0), std::make_pair(theme.destination, 6.0)}) {
+      painter.setPen(QPen(qcolor(colour), width, Qt::SolidLine, Qt::RoundCap));
+      painter.drawLine(at + QPointF(-r, -r), at + QPointF(r, r));
+      painter.drawLine(at + QPointF(-r, r), at + QPointF(r, -r));
+    }
+    painter.restore();
   }
   // Back to every room (or away from a choice not yet confirmed).
   const bool can_go_back = !scan.scanning() && phase != DriveView::Phase::kDriving &&
