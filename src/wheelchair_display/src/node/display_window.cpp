@@ -268,11 +268,12 @@ void DisplayWindow::paintMap(QPainter& painter, double now) {
   const RoomArea* room = mode == ViewMode::kRoom ? shownRoom() : nullptr;
   const auto& goal = node_.drive().goalPose();
   const double rotation = viewRotation(node_.orientation(), pose ? pose->yaw : 0.0);
-  view_ =
-      fitView(area,
-              viewFrame(node_.overview(), pose ? &footprint : nullptr, node_.drive().routePoses(),
-                        mode == ViewMode::kDrive && goal ? &*goal : nullptr, room),
-              rotation, 0.03 * height(), node_.config().display.min_view_extent);
+  view_ = fitView(
+      area,
+      viewFrame(node_.overview(), pose ? &footprint : nullptr, node_.drive().routePoses(),
+                mode == ViewMode::kDrive && goal ? &*goal : nullptr, room),
+      rotation, (mode == ViewMode::kDrive ? 0.07 : 0.03) * height(),  // room for the goal's sign
+      node_.config().display.min_view_extent);
   node_.publishView(view_, area);
   if (const auto* map = node_.map()) drawGrid(painter, view_, *map, node_.mapImage());
   if (const auto* obstacles = node_.obstacles())
