@@ -20,22 +20,23 @@ import os
 import pathlib
 import shutil
 import signal
-import socket
 import subprocess
 import sys
 import time
 
-import rosgraph
 import rospy
 import tf2_ros
 import yaml
-from geometry_msgs.msg import PoseWithCovarianceStamped
-from nav_msgs.msg import OccupancyGrid, Odometry
+from nav_msgs.msg import OccupancyGrid
 from sensor_msgs.msg import LaserScan
-from std_msgs.msg import Bool, Empty, String
 from tf2_msgs.msg import TFMessage
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "test" / "src"))  # wheelchair_test.harness, by path
+from wheelchair_test.harness import (  # noqa: E402
+    ProcessError, Processes, Rider, RiderError, places, stack, wait_for_service)
+from wheelchair_test.harness import start_master as start_master_of  # noqa: E402
+
 STARTUP_TIMEOUT = 40.0  # [s] for a node to show its first output (loaded machine)
 CAN_PORTS = (47190, 47191)  # UDP ports of the demo's CAN bus (driver, motors): not the tests'
 DRIVE_TIMEOUT = 90.0  # [wall s] for the drive to the destination
@@ -51,77 +52,17 @@ class Demo:
         self.args = args
         self.out = pathlib.Path(args.out).resolve()
         self.logs = self.out / "logs"
-        self.processes = []  # (name, Popen), in start order
+        self.processes = Processes(self.logs, cwd=self.out)
         self.facts = {}  # step results used by later steps and by the summary
         self.node = None  # rospy is initialized once the master is up
         self.tf_buffer = None
+        self.rider = None  # the one-switch rider, once the chair is up
 
-    # ---- processes -------------------------------------------------------------------------
-    def start(self, name, command):
-        """Starts `command` in its own process group, output to logs/<name>.log."""
-        log = open(self.logs / f"{name}.log", "wb")
-        process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                                   start_new_session=True, cwd=self.out)
-        log.close()
-        self.processes.append((name, process))
-        return process
-
-    def check_alive(self, name, process):
-        if process.poll() is not None:
-            raise DemoError(f"{name} exited with code {process.returncode}: "
-                            f"{self.log_tail(name) or '(no output)'} (log: logs/{name}.log)")
-
-    def log_tail(self, name, lines=3):
-        text = (self.logs / f"{name}.log").read_text(errors="replace").strip().splitlines()
-        return " | ".join(line.strip() for line in text[-lines:])
-
-    def rosrun(self, name, package, executable, *arguments):
-        """`rosrun package executable arguments`, after checking that it exists."""
-        found = subprocess.run(["rosrun", "--prefix", "echo", package, executable], capture_output=True,
-                               text=True)
-        if found.returncode != 0:
-            reason = (found.stdout + found.stderr).strip().splitlines()
-            raise DemoError(f"`rosrun {package} {executable}` is not available "
-                            f"({reason[-1] if reason else 'not built'}); build the workspace "
-                            f"(./wheelchair build)")
-        return self.start(name, ["rosrun", package, executable, *arguments])
-
-    def stop_all(self):
-        """SIGTERM to every process group we started, newest first; SIGKILL after 10 s."""
-        for name, process in reversed(self.processes):
-            if process.poll() is None:
-                try:
-                    os.killpg(process.pid, signal.SIGTERM)
-                except ProcessLookupError:
-                    pass
-        deadline = time.monotonic() + 10.0
-        for name, process in reversed(self.processes):
-            try:
-                process.wait(max(0.1, deadline - time.monotonic()))
-            except subprocess.TimeoutExpired:
-                print(f"[demo] {name} ignored SIGTERM; killing it", file=sys.stderr)
-                try:
-                    os.killpg(process.pid, signal.SIGKILL)
-                except ProcessLookupError:
-                    pass
-                process.wait()
-
-    # ---- waiting ---------------------------------------------------------------------------
     def wait_for(self, what, condition, process_names=(), timeout=STARTUP_TIMEOUT):
         """Polls `condition()` until true; fails early if one of the named processes died."""
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
-            for name, process in self.processes:
-                if name in process_names:
-                    self.check_alive(name, process)
-            result = condition()
-            if result:
-                return result
-            time.sleep(0.1)
-        raise DemoError(f"timed out after {timeout:.0f} s waiting for {what}")
+        return self.processes.wait_for(what, condition, timeout, watch=process_names)
 
     def lookup(self, parent, child):
-
         try:
             return self.tf_buffer.lookup_transform(parent, child, rospy.Time(0))
         except Exception:  # tf2 raises several types; all mean "not yet"
@@ -129,21 +70,9 @@ class Demo:
 
 
 # ---- steps ------------------------------------------------------------------------------------
-def free_port():
-    with socket.socket() as s:
-        s.bind(("localhost", 0))
-        return s.getsockname()[1]
-
-
 def start_master(demo):
     """rosmaster on a free port + rosout; this process becomes a node with a tf listener."""
-    port = free_port()
-    uri = f"http://localhost:{port}"
-    os.environ["ROS_MASTER_URI"] = uri
-    demo.start("rosmaster", ["rosmaster", "--core", "-p", str(port)])
-    demo.wait_for(f"the ROS master at {uri}", rosgraph.is_master_online, ["rosmaster"])
-    demo.rosrun("rosout", "rosout", "rosout", "__name:=rosout")
-    rospy.set_param("/use_sim_time", True)  # the simulator owns time (/clock)
+    uri = start_master_of(demo.processes, rosout=True, use_sim_time=True, export=True)
     rospy.init_node("wheelchair_demo", disable_signals=True)
     demo.tf_buffer = tf2_ros.Buffer()
     demo.node = tf2_ros.TransformListener(demo.tf_buffer)
@@ -156,9 +85,8 @@ def start_simulator(demo):
     place = demo_pose(demo, demo.args.place)
     demo.facts["start"] = place
     world = ROOT / "test" / "worlds" / f"{demo.args.world}.yaml"
-    demo.rosrun("simulator", "wheelchair_sim", "simulator", f"_world:={world}", f"_initial_x:={place['x']}",
-                f"_initial_y:={place['y']}", f"_initial_yaw:={place['yaw']}", "_speed:=0.5",
-                "_motor_bus:=udp", f"_udp_local_port:={CAN_PORTS[1]}", f"_udp_remote_port:={CAN_PORTS[0]}")
+    stack.simulator(demo.processes, world, CAN_PORTS, (place["x"], place["y"], place["yaw"]),
+                    speed=0.5)
     scans = []
     subscriber = rospy.Subscriber("/scan", LaserScan, scans.append, queue_size=1)
     scan = demo.wait_for("a laser scan on /scan", lambda: scans[-1] if scans else None, ["simulator"])
@@ -171,10 +99,9 @@ def start_chair(demo):
     """The whole chair in one process: map server, description, localizer, planner, controller,
     base driver (CAN to the simulator), safety supervisor, HMI (chair_sim.yaml)."""
     world = ROOT / "test" / "worlds" / f"{demo.args.world}"
-    demo.rosrun("wheelchair", "wheelchair_bringup", "wheelchair",
-                f"_base_driver/udp_local_port:={CAN_PORTS[0]}", f"_base_driver/udp_remote_port:={CAN_PORTS[1]}",
-                f"_map_server/map_file:={world}.yaml", f"_hmi/places_file:={world}.places.yaml",
-                f"_hmi/scan_interval:={demo.args.scan_interval}")
+    stack.chair(demo.processes, ports=CAN_PORTS, overrides={
+        "map_server/map_file": f"{world}.yaml", "hmi/places_file": f"{world}.places.yaml",
+        "hmi/scan_interval": demo.args.scan_interval})
     received = []
     subscriber = rospy.Subscriber("/map", OccupancyGrid, received.append, queue_size=1)
     grid = demo.wait_for("a map on /map", lambda: received[-1] if received else None, ["wheelchair"])
@@ -184,78 +111,27 @@ def start_chair(demo):
                   ["wheelchair"])
     demo.wait_for("tf base_link -> laser", lambda: demo.lookup("base_link", "laser"), ["wheelchair"])
     for service in ("/go_to_place", "/planner/make_plan", "/global_localization"):
-        demo.wait_for(f"service {service}", lambda: service_up(service), ["wheelchair"])
-    demo.watch = Watch()
+        wait_for_service(service, STARTUP_TIMEOUT, demo.processes, ["wheelchair"])
+    demo.rider = Rider()
     info = grid.info
     return (f"the chair (one process: map server, description, KLD localizer, harmonic planner, "
             f"controller, base driver, supervisor, HMI) with a {info.width * info.resolution:.1f} m x "
             f"{info.height * info.resolution:.1f} m map")
 
 
-def service_up(name):
-    try:
-        rospy.wait_for_service(name, timeout=0.1)
-        return True
-    except rospy.ROSException:
-        return False
-
-
-class Watch:
-    """What the demo records while it runs: truth, announcements, controller and safety."""
-    def __init__(self):
-        self.truth = []  # (t, x, y, yaw)
-        self.announcements = []  # (t, text)
-        self.controller = []
-        self.safety = []
-        self.localized = ""
-        self.collided = False
-
-        def append(field):
-            return lambda msg: getattr(self, field).append((rospy.get_time(), msg.data))
-
-        def on_truth(msg):
-            p = msg.pose.pose
-            self.truth.append((msg.header.stamp.to_sec(), p.position.x, p.position.y,
-                               2 * math.atan2(p.orientation.z, p.orientation.w)))
-
-        self.subscribers = [
-            rospy.Subscriber("/sim/ground_truth", Odometry, on_truth, queue_size=50),
-            rospy.Subscriber("/hmi/announce", String, append("announcements"), queue_size=50),
-            rospy.Subscriber("/controller/status", String, append("controller"), queue_size=20),
-            rospy.Subscriber("/safety/status", String, append("safety"), queue_size=20),
-            rospy.Subscriber("/kld/localized", String, lambda m: setattr(self, "localized", m.data)),
-            rospy.Subscriber("/sim/collision", Bool,
-                             lambda m: setattr(self, "collided", self.collided or m.data)),
-        ]
-
-    def said(self, field, prefix, since):
-        return any(t >= since and text.startswith(prefix) for t, text in getattr(self, field))
-
-
 def initialize(demo):
     """Localization: rviz's 2D Pose Estimate at the start (default) or global localization."""
-    place, watch = demo.facts["start"], demo.watch
+    place, rider = demo.facts["start"], demo.rider
     if demo.args.global_localization:
-        # std_srvs has no Python bindings on Debian unless python3-std-srvs is installed
-        subprocess.run(["rosservice", "call", "/global_localization"], check=True, capture_output=True,
-                       timeout=30)
+        localized = rider.global_localization(wall_timeout=60.0)
         how = "global localization (particles over the whole map)"
     else:
-        msg = PoseWithCovarianceStamped()
-        msg.header.frame_id = "map"
-        msg.header.stamp = rospy.Time.now()
-        msg.pose.pose.position.x, msg.pose.pose.position.y = place["x"], place["y"]
-        msg.pose.pose.orientation.z = math.sin(place["yaw"] / 2)
-        msg.pose.pose.orientation.w = math.cos(place["yaw"] / 2)
-        msg.pose.covariance[0] = msg.pose.covariance[7] = 0.1 ** 2
-        msg.pose.covariance[35] = 0.1 ** 2
-        publisher = rospy.Publisher("/initialpose", PoseWithCovarianceStamped, queue_size=1, latch=True)
-        demo.facts["initialpose_publisher"] = publisher  # keep it (latched) alive
-        publisher.publish(msg)
+        localized = rider.initialize(place["x"], place["y"], place["yaw"], wall_timeout=60.0,
+                                     std=0.1)
         how = f"an initial pose at '{place['name']}' (10 cm, 6 deg std)"
-    demo.wait_for("the localizer to report 'localized'", lambda: watch.localized == "localized",
-                  ["wheelchair"], timeout=60.0)
-    time.sleep(1.5)  # two map -> odom stamps before a goal: the planner looks up the latest pose
+    if not localized:
+        demo.processes.check("wheelchair")
+        raise DemoError("timed out after 60 s waiting for the localizer to report 'localized'")
     demo.facts["localized_how"] = how
     return f"localized from {how}"
 
@@ -263,26 +139,14 @@ def initialize(demo):
 def choose_destination(demo):
     """The one-switch rider: presses /switch when the destination's room, then the place is
     announced, then confirms; counts presses and scan steps."""
-    goal, watch = demo_pose(demo, demo.args.goal), demo.watch
+    goal = demo_pose(demo, demo.args.goal)
     demo.facts["goal"] = goal
-    switch = rospy.Publisher("/switch", Empty, queue_size=5)
-    demo.wait_for("the HMI to listen to /switch", lambda: switch.get_num_connections() > 0, ["wheelchair"])
-    presses, steps, seen = 0, 0, len(watch.announcements)
-    deadline = time.monotonic() + 60.0
-    while not watch.said("announcements", "Going to " + goal["name"], 0.0):
-        demo.check_alive("wheelchair", dict(demo.processes)["wheelchair"])
-        if time.monotonic() > deadline:
-            raise DemoError(f"the scanner never offered {goal['name']} ({presses} presses)")
-        fresh = watch.announcements[seen:]
-        seen += len(fresh)
-        for _, text in fresh:
-            highlight = text.endswith("?") and not text.startswith("Go to")
-            steps += highlight
-            if (text.startswith("Go to " + goal["name"]) or text.endswith(goal["room"] + "?")
-                    or text.endswith(goal["name"] + "?")):
-                switch.publish(Empty())
-                presses += 1
-        time.sleep(0.02)
+    try:
+        presses, steps = demo.rider.choose_by_switch(
+            goal["name"], goal["room"], sim_timeout=30.0,
+            check=lambda: demo.processes.check("wheelchair"))
+    except RiderError as error:
+        raise DemoError(str(error)) from None
     demo.facts["presses"], demo.facts["steps"] = presses, steps
     demo.facts["go_time"] = rospy.get_time()
     return (f"'{goal['name']}' ({goal['room']}) chosen with {presses} switch presses after "
@@ -291,40 +155,36 @@ def choose_destination(demo):
 
 def drive(demo):
     """The chair plans and drives; ends at the controller's goal_reached (or a stop)."""
-    watch, goal, since = demo.watch, demo.facts["goal"], demo.facts["go_time"]
-    ended = demo.wait_for(f"the drive to {goal['name']}", lambda: (
-        watch.said("controller", "goal_reached", since) or watch.said("controller", "aborted", since)
-        or watch.collided), ["wheelchair", "simulator"], timeout=DRIVE_TIMEOUT)
+    rider, goal, since = demo.rider, demo.facts["goal"], demo.facts["go_time"]
+    ended = demo.wait_for(f"the drive to {goal['name']}", lambda: rider.drive_outcome(since),
+                          ["wheelchair", "simulator"], timeout=DRIVE_TIMEOUT)
     time.sleep(1.0)  # come to rest
-    t, x, y, yaw = watch.truth[-1]
+    t, x, y, yaw = rider.truth[:4]
     error = math.hypot(x - goal["x"], y - goal["y"])
     heading = abs(math.degrees(math.remainder(yaw - goal["yaw"], 2 * math.pi)))
     # Judged by the simulator's truth (the controller may abort a few mm off its own tolerance).
-    reached = error <= 0.15 and heading <= 10.0 and not watch.collided
-    points = [(px, py) for tt, px, py, _ in watch.truth if tt >= since]
-    length = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(points, points[1:]))
+    reached = error <= 0.15 and heading <= 10.0 and not rider.collided
+    length = rider.travelled(since)
     demo.facts.update(reached=reached, error=error, heading=heading, length=length,
                       drive_time=t - since, end=(x, y, yaw), ended=ended)
-    stops = [text for tt, text in watch.safety if tt >= since and text != "safe"]
+    stops = rider.stops(since)
     demo.facts["stops"] = stops
     verdict = "reached" if reached else "NOT reached"
     text = (f"{goal['name']} {verdict}: {length:.2f} m driven in {t - since:.1f} s (simulated), final "
             f"error {error * 100:.1f} cm and {heading:.1f} deg")
     if not reached:
-        last = [s for tt, s in watch.controller if tt >= since][-1:]
-        raise DemoError(f"{text}; controller {last}, safety stops {stops[:2]}, collided {watch.collided}")
+        last = [s for _, s in rider.received("controller", since)][-1:]
+        raise DemoError(f"{text}; controller {last}, safety stops {stops[:2]}, collided {rider.collided}")
     return text
 
 
 def demo_pose(demo, name):
     """A named place of the world: {name, room, x, y, yaw}."""
-    places = ROOT / "test" / "worlds" / f"{demo.args.world}.places.yaml"
-    listed = yaml.safe_load(places.read_text())["places"]
-    for place in listed:
-        if place["name"] == name:
-            return place
-    raise DemoError(f"no place named '{name}' in {places} (there are: "
-                    f"{', '.join(p['name'] for p in listed)})")
+    listed = places(demo.args.world)
+    if name not in listed:
+        raise DemoError(f"no place named '{name}' in {demo.args.world}.places.yaml (there are: "
+                        f"{', '.join(listed)})")
+    return listed[name]
 
 
 def snapshot(demo, name, view):
@@ -332,13 +192,13 @@ def snapshot(demo, name, view):
     command = ["rosrun", "wheelchair_bringup", "snapshot", "--out", str(demo.out / f"{name}.png"),
                "--seconds", str(demo.args.snapshot_seconds), "--view", ",".join(f"{v:.3f}" for v in view),
                "--log", str(demo.logs / f"rviz_{name}.log")]
-    process = demo.start(f"snapshot_{name}", command)  # stopped with the rest if we are interrupted
+    process = demo.processes.start(f"snapshot_{name}", command)  # stopped with the rest if interrupted
     try:
         code = process.wait(demo.args.snapshot_seconds + 120)
     except subprocess.TimeoutExpired:
         raise DemoError(f"snapshot {name}.png did not finish (log: logs/snapshot_{name}.log)") from None
     if code != 0:
-        raise DemoError(f"snapshot {name}.png failed: {demo.log_tail(f'snapshot_{name}', 1)}")
+        raise DemoError(f"snapshot {name}.png failed: {demo.processes.log_tail(f'snapshot_{name}', 1)}")
     demo.facts.setdefault("snapshot_seconds", []).append(time.monotonic() - started)
     return f"{name}.png"
 
@@ -371,7 +231,7 @@ def write_report(demo):
         f"{'reached' if f['reached'] else 'NOT reached'}",
         f"- Final error (simulator truth vs the place): {f['error'] * 100:.1f} cm, {f['heading']:.1f} deg",
         f"- Safety stops during the drive: {', '.join(f['stops']) if f['stops'] else 'none'}",
-        f"- Collision: {'yes' if demo.watch.collided else 'no'}",
+        f"- Collision: {'yes' if demo.rider.collided else 'no'}",
         "",
         "![overview](overview.png)",
         "",
@@ -459,7 +319,7 @@ def run(demo):
         print(f"[demo] {name} ...", flush=True)
         try:
             result = step(demo)
-        except DemoError as error:
+        except (DemoError, ProcessError, RiderError) as error:
             raise DemoError(f"step '{name}' failed: {error}") from None
         print(f"[demo] {name}: {result} [{time.monotonic() - started:.1f} s]", flush=True)
         done.append((name, result))
@@ -506,7 +366,7 @@ def main():
     finally:
         if demo.node is not None:
             rospy.signal_shutdown("demo finished")
-        demo.stop_all()
+        demo.processes.stop_all()
     summary = (f"Demo ({time.monotonic() - started:.0f} s, world '{args.world}'): started "
                + "; ".join(result for _, result in done)
                + f". Every node ran under rosrun (no roslaunch) and all processes were stopped again; "

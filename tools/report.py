@@ -3,7 +3,8 @@
 with the paper (the workspace must be sourced).
 
 Starts its own ROS master on a free port, the simulator behind the CAN (UDP) path and the
-one-process chair (test/table2/table2_stack.py), drives the 10 pairs of
+one-process chair (test/table2/table2_stack.py's start, through wheelchair_test.harness), drives
+the 10 pairs of
 test/table2/flat_pairs.yaml (test/table2/table2_protocol.py), and writes into --out:
   report.md            the paper's Tables 1 and 2 beside ours, definitions, figures
   runs.json            every run: plan, truth, estimate, MSErc, MSEre, goal errors, outcome
@@ -19,13 +20,10 @@ import json
 import math
 import os
 import pathlib
-import signal
-import socket
 import subprocess
 import sys
 import time
 
-import rosgraph
 import rospkg
 import rospy
 import yaml
@@ -35,66 +33,13 @@ from nav_msgs.msg import Path
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 TABLE2 = ROOT / "test" / "table2"
 sys.path.insert(0, str(TABLE2))
-import table2_metrics as metrics  # noqa: E402
-import table2_protocol as protocol  # noqa: E402
+sys.path.insert(0, str(ROOT / "test" / "src"))  # wheelchair_test.harness, by path
 import table2_figures as figures  # noqa: E402
+import table2_protocol as protocol  # noqa: E402
+import table2_stack  # noqa: E402
+from wheelchair_test.harness import Processes, start_master  # noqa: E402
 
 TRUTH_TOPIC, ESTIMATE_TOPIC = "/table2/truth_path", "/table2/estimate_path"
-
-
-class Processes:
-    """The processes the report started (each in its own process group), stopped in reverse."""
-
-    def __init__(self, logs):
-        self.logs = logs
-        self.started = []
-
-    def start(self, name, command, env=None):
-        with open(self.logs / f"{name}.log", "wb") as log:
-            p = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT,
-                                 stdin=subprocess.DEVNULL, start_new_session=True, env=env)
-        self.started.append((name, p))
-        return p
-
-    def check(self):
-        for name, p in self.started:
-            if p.poll() is not None:
-                raise RuntimeError(f"{name} exited with {p.returncode} (log: logs/{name}.log)")
-
-    def stop_all(self):
-        for name, p in reversed(self.started):
-            for sig, grace in ((signal.SIGINT, 8.0), (signal.SIGTERM, 3.0), (signal.SIGKILL, 1.0)):
-                if p.poll() is not None:
-                    break
-                try:
-                    os.killpg(p.pid, sig)
-                except ProcessLookupError:
-                    break
-                try:
-                    p.wait(grace)
-                except subprocess.TimeoutExpired:
-                    pass
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def start_master(procs):
-    port = free_port()
-    os.environ["ROS_MASTER_URI"] = f"http://127.0.0.1:{port}"
-    procs.start("rosmaster", ["rosmaster", "--core", "-p", str(port)])
-    master = rosgraph.Master("/table2_report")
-    deadline = time.time() + 30
-    while not master.is_online():
-        procs.check()
-        if time.time() > deadline:
-            raise RuntimeError("rosmaster did not come up in 30 s")
-        time.sleep(0.2)
-    procs.start("rosout", ["rosrun", "rosout", "rosout"])
-    master.setParam("/use_sim_time", True)
 
 
 def rviz_config(out):
@@ -151,19 +96,17 @@ def run_protocol(args, out, logs):
         pairs = [p for p in pairs if p["index"] in args.pairs]
     procs = Processes(logs)
     records = []
+    bringup_copy = None
     try:
-        start_master(procs)
-        x, y, yaw = pairs[0]["start"]
-        stack = procs.start("chair_and_simulator",
-                            ["/usr/bin/python3", str(TABLE2 / "table2_stack.py"), "--speed",
-                             str(args.speed), "--nice", str(args.nice), "--initial", str(x),
-                             str(y), str(yaw)]
-                            + (["--config", args.chair_config] if args.chair_config else []))
+        start_master(procs, rosout=True, use_sim_time=True, export=True)
+        bringup_copy = table2_stack.start(
+            procs, args.bringup or table2_stack.default_config(),
+            ROOT / "test" / "worlds" / "flat.yaml", args.speed, pairs[0]["start"], args.nice)
         rospy.init_node("table2_report", disable_signals=True)
         runner = protocol.Table2Runner(wall_scale=args.wall_scale)
         runner.check_processes = procs.check
         runner.wait_ready()
-        args.nice = os.getpriority(os.PRIO_PROCESS, stack.pid)  # what the stack got
+        args.nice = procs.niceness("chair")  # what the stack got
         truth_pub = rospy.Publisher(TRUTH_TOPIC, Path, queue_size=1, latch=True)
         estimate_pub = rospy.Publisher(ESTIMATE_TOPIC, Path, queue_size=1, latch=True)
         config = rviz_config(out) if args.snapshots else None
@@ -190,6 +133,8 @@ def run_protocol(args, out, logs):
             records.append(record)
     finally:
         procs.stop_all()
+        if bringup_copy is not None:
+            os.unlink(bringup_copy)
     return world, records
 
 
@@ -230,7 +175,7 @@ def main():
                         help="niceness of simulator and chair (deploy/wheelchair.service: -5)")
     parser.add_argument("--wall-scale", type=float, default=1.0,
                         help="multiplies every wall-clock timeout (loaded machine)")
-    parser.add_argument("--chair-config", help="bring-up file (default: chair_sim.yaml)")
+    parser.add_argument("--bringup", help="bring-up file (default: chair_sim.yaml)")
     parser.add_argument("--no-snapshots", dest="snapshots", action="store_false")
     parser.add_argument("--no-kld-bench", dest="kld_bench", action="store_false")
     parser.add_argument("--kld-bench-timeout", type=float, default=2400.0)

@@ -3,14 +3,15 @@
 the controller's goal_reached (or abort, collision, or the window), announcing "driving" when the
 controller starts to follow the plan (aligning/tracking). Prints one event per line
 on stdout ("<event> <wall time> <sim time> [detail]") for the measuring script to time its
-/proc samples against; uses the system tests' Scenario harness (test/system/scenario.py)."""
+/proc samples against; the rider is wheelchair_test.harness's Rider."""
 import argparse
 import pathlib
 import sys
 import time
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "test" / "system"))
-from scenario import Scenario, place  # noqa: E402
+# the harness from this checkout (test/src), else the installed wheelchair_test
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "test" / "src"))
+from wheelchair_test.harness import Rider, place  # noqa: E402
 
 import rospy  # noqa: E402
 
@@ -26,33 +27,29 @@ def main():
     parser.add_argument("--window", type=float, default=30.0, help="wall seconds of driving at most")
     parser.add_argument("--ready-timeout", type=float, default=180.0)
     args = parser.parse_args()
-    scenario = Scenario("bench_system_rider")
-    why = scenario.wait_ready(args.ready_timeout)
+    rider = Rider("bench_system_rider")
+    why = rider.wait_ready(args.ready_timeout)
     if why:
         event("failed", why)
         return 1
-    if abs(scenario.truth[0] - rospy.get_time()) > 10.0:  # sim stamps vs this node's clock
+    if abs(rider.truth[0] - rospy.get_time()) > 10.0:  # sim stamps vs this node's clock
         event("failed", "the rider is not on the simulator's /clock (/use_sim_time unset when it started)")
         return 1
     event("ready")
-    if not scenario.initialize(*place(args.start), wall_timeout=args.ready_timeout):
-        event("failed", "not localized: " + scenario.describe())
+    if not rider.initialize(*place(args.start), wall_timeout=args.ready_timeout):
+        event("failed", "not localized: " + rider.describe())
         return 1
     event("localized")
     since = rospy.get_time()
-    scenario.send_goal(*place(args.goal))
+    rider.send_goal(*place(args.goal))
     event("goal_sent", args.goal)
-    ended = lambda: (scenario.controller_says("goal_reached", since) or  # noqa: E731
-                     scenario.controller_says("aborted", since) or scenario.collided)
-    scenario.wait(lambda: scenario.controller_says("aligning", since) or
-                  scenario.controller_says("tracking", since) or ended(), args.window)
-    if not ended():
+    rider.wait(lambda: rider.controller_says("aligning", since) or
+               rider.controller_says("tracking", since) or rider.drive_outcome(since), args.window)
+    if not rider.drive_outcome(since):
         event("driving")
-    scenario.wait(ended, args.window)
-    outcome = ("goal_reached" if scenario.controller_says("goal_reached", since) else
-               "collided" if scenario.collided else
-               "aborted" if scenario.controller_says("aborted", since) else "window_end")
-    event(outcome, f"travelled {scenario.travelled(since):.2f} m; " + scenario.describe(since))
+    rider.wait(lambda: rider.drive_outcome(since), args.window)
+    outcome = rider.drive_outcome(since) or "window_end"
+    event(outcome, f"travelled {rider.travelled(since):.2f} m; " + rider.describe(since))
     return 0
 
 

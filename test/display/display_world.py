@@ -6,7 +6,9 @@ import os
 
 import yaml
 
-from scenario import WORLDS
+from wheelchair_test.harness import worlds_dir
+
+WORLDS = str(worlds_dir())
 
 START = (3.0, 2.2, 0.0)  # living_centre
 ROOM_PAD = 0.6  # the display's default room_pad [m]

@@ -17,11 +17,11 @@ import rostest
 import yaml
 from geometry_msgs.msg import PoseWithCovarianceStamped
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "system"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from display_harness import THEMES, Display, colour_mask  # noqa: E402
 from display_world import REMAPS, room_point, test_output  # noqa: E402
-from scenario import Scenario, yaw_of  # noqa: E402
+from wheelchair_test.harness import Rider as Scenario  # noqa: E402
+from wheelchair_test.harness.rider import yaw_of  # noqa: E402
 
 W, H = 1024, 768
 
@@ -116,7 +116,7 @@ class DisplayCarer(unittest.TestCase):
         error = math.hypot(p.position.x - tx, p.position.y - ty)
         self.assertLess(error, 2.0 / d.view.scale + 0.02, f"set {error:.3f} m off the truth")
         self.assertLess(abs(math.remainder(yaw_of(p.orientation) - tyaw, 2 * math.pi)), 0.1)
-        self.assertTrue(s.wait(lambda: s.localized == "localized", 40.0), s.describe())
+        self.assertTrue(s.wait(s.localized, 40.0), s.describe())
         self.assertTrue(d.wait_status(lambda t: t == "Choose where to go.", 20.0), d.status)
         rospy.loginfo("display carer: pose set %.3f m off the truth", error)
 

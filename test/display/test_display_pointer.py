@@ -13,12 +13,11 @@ import unittest
 import rospy
 import rostest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "system"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from display_harness import THEMES, Display, colour_mask  # noqa: E402
 from display_world import (REMAPS, START, back_plate, go_button, place_pose, place_xy,  # noqa
                            room_point, test_output)
-from scenario import Scenario  # noqa: E402
+from wheelchair_test.harness import Rider as Scenario  # noqa: E402
 
 DWELL = 1.5  # the display's default dwell time [s]
 

@@ -17,13 +17,13 @@ import numpy as np
 import rospy
 import rostest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "system"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from display_harness import (THEMES, Display, colour_mask, footprint_offset, load_map,  # noqa
                              map_shows_map, status_band, status_text_measures)
 from display_world import (FOOTPRINT, REMAPS, SAFETY_TOPIC, START, go_button, place_xy,  # noqa
                            places, room_box, room_point, test_output)
-from scenario import WORLDS, Scenario  # noqa: E402
+from wheelchair_test.harness import Rider as Scenario  # noqa: E402
+from display_world import WORLDS  # noqa: E402
 from wheelchair_msgs.msg import HmiState, SafetyStatus  # noqa: E402
 
 

@@ -18,10 +18,9 @@ import rostest
 from nav_msgs.msg import OccupancyGrid
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "system"))
 from display_harness import Display  # noqa: E402
 from display_world import REMAPS, SAFETY_TOPIC  # noqa: E402
-from scenario import WORLDS  # noqa: E402
+from display_world import WORLDS  # noqa: E402
 from wheelchair_msgs.msg import HmiState, SafetyStatus  # noqa: E402
 
 RATE = 150  # words per minute

@@ -11,11 +11,10 @@ import unittest
 import rospy
 import rostest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "system"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from display_harness import Display  # noqa: E402
 from display_world import REMAPS, START, test_output  # noqa: E402
-from scenario import Scenario  # noqa: E402
+from wheelchair_test.harness import Rider as Scenario  # noqa: E402
 
 
 class DisplayStop(unittest.TestCase):

@@ -12,20 +12,20 @@ import rospy
 import rostest
 import yaml
 
-from scenario import WORLDS, Scenario
+from wheelchair_test.harness import Rider, worlds_dir
 
 START = (3.0, 2.2, 0.0)  # living_centre
 LEGS = [((7.0, 7.4, 0.0), ["living_hallway", "hallway_study"])]  # tail 0.4 m clear of the door
 
 
 def doors():
-    with open(f"{WORLDS}/flat.doors.yaml") as f:
+    with open(worlds_dir() / "flat.doors.yaml") as f:
         return {d["name"]: d for d in yaml.safe_load(f)["doors"]}
 
 
 class Doorways(unittest.TestCase):
     def test_doorway_sequence(self):
-        s = Scenario("test_doorways")
+        s = Rider("test_doorways")
         self.assertEqual(s.wait_ready(), "")
         self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
         all_doors = doors()

@@ -11,7 +11,7 @@ import unittest
 import rospy
 import rostest
 
-from scenario import Scenario, place
+from wheelchair_test.harness import Rider, describe_stop, place
 
 START = (3.0, 2.2, 0.0)  # living_centre
 GOAL = "kitchen_door"
@@ -25,17 +25,18 @@ KIDNAP = (2.3, 4.0, math.pi)
 
 class Kidnap(unittest.TestCase):
     def test_kidnapped_chair_stops_relocalizes_and_arrives(self):
-        s = Scenario("test_kidnap")
+        s = Rider("test_kidnap")
         s.start_driving(self, START, GOAL, 1.0)
         t_kidnap = rospy.get_time()
         self.assertTrue(s.teleport(*KIDNAP).success)
         # Travel is measured from the first true pose at the kidnap place (not across the jump).
         self.assertTrue(s.wait(lambda: s.error_to(*KIDNAP)[0] < 0.05, 10.0))
         t_landed = s.truth[0]
-        self.assertTrue(s.wait(lambda: s.safety_stop(t_kidnap) != "" or
+        self.assertTrue(s.wait(lambda: s.first_stop(t_kidnap) or
                                s.controller_says("aborted", t_kidnap), 30.0),
                         "kidnapping not noticed: " + s.describe(t_kidnap))
-        noticed = s.safety_stop(t_kidnap) or "controller aborted"
+        stop = s.first_stop(t_kidnap)
+        noticed = describe_stop(stop[1]) if stop else "controller aborted"
         # The carer steps in once the chair has finished its controlled stop ("Stopped: ..."):
         # the teleport zeroes the true speed at once, but the controller's stop runs on for up
         # to ~3 s and ends with "aborted: <the old reason>" (a goal given before that was

@@ -8,9 +8,10 @@ import unittest
 
 import rospy
 import rostest
+from wheelchair_msgs.msg import SafetyStatus
 from wheelchair_sim.srv import EnableLaser
 
-from scenario import Scenario, place
+from wheelchair_test.harness import Rider, describe_stop
 
 START = (3.0, 2.2, 0.0)  # living_centre, heading +x
 GOAL = "kitchen_door"
@@ -18,16 +19,17 @@ GOAL = "kitchen_door"
 
 class LaserDropout(unittest.TestCase):
     def test_laser_dropout_stops_with_reason(self):
-        s = Scenario("test_laser_dropout")
+        s = Rider("test_laser_dropout")
         s.start_driving(self, START, GOAL, 1.0)
         laser = rospy.ServiceProxy("/sim/enable_laser", EnableLaser)
         t_off = rospy.get_time()
         self.assertTrue(laser(False).success)
-        self.assertTrue(s.wait(lambda: s.safety_stop(t_off) != "", 30.0),
+        self.assertTrue(s.wait(lambda: s.first_stop(t_off), 30.0),
                         "no safety stop: " + s.describe(t_off))
-        reason = s.safety_stop(t_off)
-        self.assertIn("laser", reason)
-        stopped_at = next(t for t, text in s.safety if t >= t_off and text != "safe")
+        stopped_at, stop = s.first_stop(t_off)
+        reason = describe_stop(stop)
+        self.assertEqual(stop.reason, SafetyStatus.LASER_SILENT, reason)
+        self.assertIn("laser", stop.sentence)
         # 300 ms watchdog + one supervisor period (50 ms) + scan period slack (100 ms).
         self.assertLess(stopped_at - t_off, 0.3 + 0.05 + 0.1 + 0.1, reason)
         self.assertTrue(s.wait(s.at_rest, 30.0), "still moving: " + s.describe(t_off))

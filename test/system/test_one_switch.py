@@ -9,7 +9,7 @@ import unittest
 import rospy
 import rostest
 
-from scenario import Scenario, place
+from wheelchair_test.harness import Rider, RiderError, place
 
 START = (3.0, 2.2, 0.0)  # living_centre
 # Places with room to turn at the goal: the chair's rear corners sweep 0.86 m about the axle
@@ -19,33 +19,8 @@ ROUTE = [("living_door", "living_room"), ("kitchen_door", "kitchen"),
 
 
 class OneSwitch(unittest.TestCase):
-    def choose(self, s, name, room, wall_timeout=90.0):
-        """Presses like the rider; returns (presses, scan steps) once the goal is sent."""
-        presses, steps, seen = 0, 0, len(s.announcements)
-        confirmed = False
-        deadline = rospy.get_time() + wall_timeout
-        while not confirmed:
-            self.assertTrue(s.wait(lambda: len(s.announcements) > seen, 30.0),
-                            f"{name}: the scanner went quiet: " + s.describe())
-            with s.lock:
-                new = [text for _, text in s.announcements[seen:]]
-                seen = len(s.announcements)
-            for text in new:
-                highlight = text.endswith("?") and not text.startswith("Go to")
-                steps += highlight
-                if text.startswith("Going to " + name):
-                    confirmed = True
-                elif text.startswith("Go to " + name):
-                    s.press()
-                    presses += 1
-                elif text.endswith(room + "?") or text.endswith(name + "?"):
-                    s.press()
-                    presses += 1
-            self.assertLess(rospy.get_time(), deadline, f"{name}: never confirmed")
-        return presses, steps
-
     def test_three_places_in_a_row(self):
-        s = Scenario("test_one_switch")
+        s = Rider("test_one_switch")
         self.assertEqual(s.wait_ready(), "")
         self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
         figures = []
@@ -54,7 +29,10 @@ class OneSwitch(unittest.TestCase):
             last = s.received("controller")[-1:]
             rospy.loginfo("one switch: %s marked at %.3f s, last status %s", name, since.time,
                           "at %.3f s (%s)" % last[0] if last else "none")
-            presses, steps = self.choose(s, name, room)
+            try:  # presses like the rider; (presses, scan steps) once the goal is sent
+                presses, steps = s.choose_by_switch(name, room, sim_timeout=90.0)
+            except RiderError as e:
+                self.fail(str(e))
             self.assertLessEqual(presses, 3, name)
             self.assertTrue(s.wait(lambda: s.controller_says("goal_reached", since) or
                                    s.controller_says("aborted", since), 120.0),

@@ -9,8 +9,9 @@ import unittest
 
 import rospy
 import rostest
+from wheelchair_msgs.msg import SafetyStatus
 
-from scenario import Scenario
+from wheelchair_test.harness import Rider, describe_stop
 
 START = (3.0, 2.2, 0.0)  # living_centre
 GOAL = "kitchen_door"
@@ -34,7 +35,7 @@ def point_ahead(plan, x, y, distance):
 
 class Person(unittest.TestCase):
     def test_person_in_front_stops_before_contact(self):
-        s = Scenario("test_person")
+        s = Rider("test_person")
         s.start_driving(self, START, GOAL, 0.8)
         plan = s.plans[-1]
         _, x, y, _, v, _ = s.truth
@@ -42,10 +43,11 @@ class Person(unittest.TestCase):
         self.assertIsNotNone(person, "plan too short for the test")
         t_person = rospy.get_time()
         self.assertTrue(s.add_obstacle(person[0], person[1], RADIUS, 0.0).success)
-        self.assertTrue(s.wait(lambda: s.safety_stop(t_person) != "", 30.0),
+        self.assertTrue(s.wait(lambda: s.first_stop(t_person), 30.0),
                         "no safety stop: " + s.describe(t_person))
-        reason = s.safety_stop(t_person)
-        self.assertIn("in the way", reason)
+        _, stop = s.first_stop(t_person)
+        self.assertEqual(stop.reason, SafetyStatus.OBSTACLE, describe_stop(stop))
+        self.assertIn("in the way", stop.sentence)
         self.assertTrue(s.wait(s.at_rest, 30.0), "still moving: " + s.describe(t_person))
         s.sim_sleep(1.0)
         self.assertFalse(s.collided, "the chair touched the person: " + s.describe(t_person))

@@ -1,18 +1,21 @@
 #!/usr/bin/env python3
 """Every node of the stack starts with plain `rosrun` (no roslaunch), registers with the
-master and keeps running; the one-process bring-up loads its nodelets from a config file."""
+master and keeps running; the one-process bring-up loads its nodelets from a config file. A
+node given an unknown or renamed parameter, or a file it needs that is missing, refuses to start
+with a message that says so."""
 import os
-import subprocess
 import tempfile
 import time
 import unittest
 
 import rosgraph
-import rospkg
 import rostest
+import yaml
 
-WORLDS = os.path.join(rospkg.RosPack().get_path("wheelchair_test"), "worlds")
-CONFIG = os.path.join(rospkg.RosPack().get_path("wheelchair_test"), "config")
+from wheelchair_test.harness import Processes, worlds_dir
+
+WORLDS = worlds_dir()
+CONFIG = WORLDS.parent / "config"
 
 # (package, executable, arguments, node names that must appear)
 NODES = [
@@ -20,7 +23,7 @@ NODES = [
     ("wheelchair_mapping", "mapping", [], ["/mapping"]),
     ("wheelchair_description", "description_publisher", [], ["/description_publisher"]),
     ("wheelchair_kld", "kld_localizer", [], ["/kld_localizer"]),
-    ("wheelchair_harmonic_planner", "planner_host", [], ["/planner_host"]),
+    ("wheelchair_planner", "planner_host", [], ["/planner_host"]),
     ("wheelchair_controller", "controller", [], ["/controller"]),
     ("wheelchair_base_driver", "base_driver", ["_transport:=fake"], ["/base_driver"]),
     ("wheelchair_sim", "simulator", [f"_world:={WORLDS}/flat.yaml", "_initial_x:=3.0",
@@ -28,6 +31,33 @@ NODES = [
     ("wheelchair_safety", "safety", [], ["/safety"]),
     ("wheelchair_hmi", "hmi", [f"_places_file:={WORLDS}/flat.places.yaml"], ["/hmi"]),
     ("wheelchair_bringup", "wheelchair", [f"{CONFIG}/bringup_minimal.yaml"], ["/wheelchair"]),
+]
+
+
+def _missing_home_config():
+    """bringup_minimal.yaml with the rider's places in a file that does not exist."""
+    doc = yaml.safe_load((CONFIG / "bringup_minimal.yaml").read_text())
+    for nodelet in doc["nodelets"]:
+        if nodelet["name"] == "hmi":
+            nodelet["params"]["places_file"] = "/nonexistent/home/places.yaml"
+    path = os.path.join(tempfile.mkdtemp(prefix="rosrun_nodes_"), "missing_home.yaml")
+    with open(path, "w") as f:
+        yaml.safe_dump(doc, f)
+    return path
+
+
+# (package, executable, arguments, what the refusal must say)
+REFUSED = [
+    ("wheelchair_safety", "safety", ["_scan_timout:=0.5"], "unknown parameter 'scan_timout'"),
+    ("wheelchair_safety", "safety", ["_scan_timeout:=0.0"], "scan_timeout must be positive"),
+    ("wheelchair_hmi", "hmi", [f"_places_file:={WORLDS}/flat.places.yaml", "_frame_id:=map"],
+     "'frame_id' is now called 'map_frame'"),
+    ("wheelchair_hmi", "hmi", ["_places_file:=/nonexistent/places.yaml"],
+     "cannot open places file"),
+    ("wheelchair_bringup", "wheelchair", [_missing_home_config()],
+     "/hmi/places_file: cannot read '/nonexistent/home/places.yaml'"),
+    ("wheelchair_bringup", "wheelchair", [f"{CONFIG}/bringup_minimal.yaml", "_hmii/scan_interval:=1.0"],
+     "override ~hmii/scan_interval names no nodelet"),
 ]
 STARTUP = 30.0  # [s] on a loaded 2-core machine
 
@@ -38,49 +68,63 @@ def _all_nodes():
 
 
 class RosrunEveryNode(unittest.TestCase):
+    def setUp(self):
+        self.logs = tempfile.mkdtemp(prefix="rosrun_nodes_")
+        self.processes = Processes(self.logs, grace=10.0)
+
+    def tearDown(self):
+        self.processes.stop_all()
+
+    def output(self, name):
+        return self.processes.log_tail(name, lines=20)[-1500:]
+
     def run_node(self, package, executable, arguments, names):
-        log = tempfile.TemporaryFile()
-        process = subprocess.Popen(["rosrun", package, executable, *arguments], stdout=log,
-                                   stderr=subprocess.STDOUT, start_new_session=True)
-
-        def output():
-            log.seek(0)
-            return log.read().decode(errors="replace")[-1500:]
-
-        try:
-            deadline = time.monotonic() + STARTUP
-            while time.monotonic() < deadline and not set(names) <= _all_nodes():
-                if process.poll() is not None:
-                    self.fail(f"rosrun {package} {executable} exited with {process.returncode}: "
-                              f"{output()}")
-                time.sleep(0.2)
-            self.assertTrue(set(names) <= _all_nodes(),
-                            f"rosrun {package} {executable}: {names} not registered after {STARTUP} s")
-            time.sleep(1.0)
-            if process.poll() is not None:
-                self.fail(f"rosrun {package} {executable} died after starting: {output()}")
-        finally:
-            if process.poll() is None:
-                os.killpg(process.pid, 15)
-            try:
-                process.wait(10)
-            except subprocess.TimeoutExpired:
-                os.killpg(process.pid, 9)
-                process.wait()
+        self.processes.rosrun(executable, package, executable, *arguments)
+        deadline = time.monotonic() + STARTUP
+        while time.monotonic() < deadline and not set(names) <= _all_nodes():
+            if self.processes.ended(executable):
+                self.fail(f"rosrun {package} {executable} exited with "
+                          f"{self.processes.ended(executable)[1]}: {self.output(executable)}")
+            time.sleep(0.2)
+        self.assertTrue(set(names) <= _all_nodes(),
+                        f"rosrun {package} {executable}: {names} not registered after {STARTUP} s")
+        time.sleep(1.0)
+        if self.processes.ended(executable):
+            self.fail(f"rosrun {package} {executable} died after starting: {self.output(executable)}")
+        self.processes.stop(executable)
         # the node is gone again before the next one starts
         deadline = time.monotonic() + 10.0
         while time.monotonic() < deadline and set(names) & _all_nodes():
             time.sleep(0.2)
 
+    def run_refused(self, package, executable, arguments, message):
+        self.processes.rosrun(executable, package, executable, *arguments)
+        deadline = time.monotonic() + STARTUP
+        while time.monotonic() < deadline and not self.processes.ended(executable):
+            time.sleep(0.2)
+        ended = self.processes.ended(executable)
+        self.assertIsNotNone(ended, f"rosrun {package} {executable} {arguments} did not refuse")
+        self.assertEqual(ended[1], 1, self.output(executable))
+        self.assertIn(message, self.output(executable))
+        # the refused parameters stay on the master: gone before the next node starts
+        for namespace in {f"/{executable}", "/hmi", "/map_server"}:
+            try:
+                rosgraph.Master("/test_rosrun_nodes").deleteParam(namespace)
+            except rosgraph.MasterException:
+                pass
 
-def _make_test(spec):
+
+def _make_test(spec, run):
     def test(self):
-        self.run_node(*spec)
+        getattr(self, run)(*spec)
     return test
 
 
 for _spec in NODES:
-    setattr(RosrunEveryNode, f"test_{_spec[0]}__{_spec[1]}", _make_test(_spec))
+    setattr(RosrunEveryNode, f"test_{_spec[0]}__{_spec[1]}", _make_test(_spec, "run_node"))
+for _i, _spec in enumerate(REFUSED):
+    setattr(RosrunEveryNode, f"test_refuses_{_i}_{_spec[0]}__{_spec[1]}",
+            _make_test(_spec, "run_refused"))
 
 if __name__ == "__main__":
     rostest.rosrun("wheelchair_test", "rosrun_every_node", RosrunEveryNode)

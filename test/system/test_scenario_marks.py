@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The system tests' windows of messages (Scenario.mark): a message received before a mark
+"""The system tests' windows of messages (Rider.mark): a message received before a mark
 never counts after it, even at the same simulated time. No /clock runs here, so the sim time
 stays 0 and every message and mark share it: the worst case of a loaded machine, where the
 test's clock had not advanced between one leg's 'goal_reached' and the next leg's start."""
@@ -10,19 +10,19 @@ import rospy
 import rostest
 from std_msgs.msg import String
 
-from scenario import Scenario
+from wheelchair_test.harness import Rider
 
 
 class ScenarioMarks(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.s = Scenario("test_scenario_marks")
+        cls.s = Rider("test_scenario_marks")
 
     def status(self, text):
-        self.s._append("controller")(String(data=text))
+        self.s._on_controller(String(data=text))
 
     def announce(self, text):
-        self.s._append("announcements")(String(data=text))
+        self.s._on_announcement(String(data=text))
 
     def test_the_clock_stands_still(self):
         self.assertEqual(rospy.get_time(), 0.0)

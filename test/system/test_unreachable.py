@@ -8,7 +8,7 @@ import unittest
 import rospy
 import rostest
 
-from scenario import Scenario
+from wheelchair_test.harness import Rider
 
 START = (3.0, 2.2, 0.0)  # living_centre
 GOALS = [
@@ -20,7 +20,7 @@ GOALS = [
 
 class Unreachable(unittest.TestCase):
     def test_unreachable_goals_are_refused_and_the_chair_stays(self):
-        s = Scenario("test_unreachable")
+        s = Rider("test_unreachable")
         self.assertEqual(s.wait_ready(), "")
         self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
         t0 = rospy.get_time()

@@ -1,13 +1,19 @@
 // `rosrun wheelchair_bringup wheelchair [config.yaml]`: the whole chair in one process.
 // One nodelet manager loads the map server, localizer, planner host, controller, base driver,
 // supervisor and rider interface listed in the bring-up file, each with its parameters, so
-// messages pass between them as shared pointers (no copies, no serialization).
+// messages pass between them as shared pointers (no copies, no serialization). It refuses to
+// start (exit 1, one line saying why) on a bad bring-up file, an override for a nodelet the file
+// does not list, a missing file a nodelet reads (*_file), or a nodelet that refuses to load
+// (an unknown or invalid parameter).
 #include <wheelchair_bringup/bringup_config.h>
 
 #include <nodelet/loader.h>
 #include <ros/package.h>
 #include <ros/ros.h>
 #include <xmlrpcpp/XmlRpcValue.h>
+
+#include <map>
+#include <set>
 
 namespace {
 
@@ -44,6 +50,37 @@ void setParams(const std::string& ns, const YAML::Node& params) {
     ros::param::set(ns + "/" + item.first.as<std::string>(), toXmlRpc(item.second));
 }
 
+/// Empty if every private parameter of the `wheelchair` node is ~num_worker_threads or an
+/// override ~<nodelet>/<key> of a nodelet of the file; else the first that is neither.
+std::string unknownOverride(const wheelchair_bringup::BringupConfig& config) {
+  std::set<std::string> known{"num_worker_threads"};
+  for (const auto& spec : config.nodelets) known.insert(spec.name);
+  std::vector<std::string> names;
+  ros::param::getParamNames(names);
+  const std::string prefix = ros::this_node::getName() + "/";
+  for (const std::string& name : names) {
+    if (name.rfind(prefix, 0) != 0) continue;
+    const std::string key = name.substr(prefix.size());
+    if (!known.count(key.substr(0, key.find('/')))) return "~" + key;
+  }
+  return "";
+}
+
+/// The per-run overrides ~<nodelet>/<key> of one nodelet that are strings (file paths among
+/// them), for the file check before anything is set.
+std::map<std::string, std::string> stringOverrides(const std::string& nodelet) {
+  std::map<std::string, std::string> out;
+  XmlRpc::XmlRpcValue overrides;
+  if (!ros::param::get("~" + nodelet, overrides) ||
+      overrides.getType() != XmlRpc::XmlRpcValue::TypeStruct)
+    return out;
+  for (auto& item : overrides)
+    out[item.first] = item.second.getType() == XmlRpc::XmlRpcValue::TypeString
+                          ? static_cast<std::string>(item.second)
+                          : std::string();
+  return out;
+}
+
 /// Per-run overrides: the `wheelchair` node's private parameters ~<nodelet>/<key> (e.g.
 /// `_base_driver/udp_local_port:=47120`, or <param> inside a rostest's <node>) win over the file.
 void overlayPrivateParams(const std::string& nodelet, const std::string& ns) {
@@ -72,6 +109,19 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     ROS_FATAL("%s", e.what());
     return 1;
+  }
+  const std::string unknown = unknownOverride(config);
+  if (!unknown.empty()) {
+    ROS_FATAL("%s: override %s names no nodelet of the file", config_path.c_str(), unknown.c_str());
+    return 1;
+  }
+  for (const auto& spec : config.nodelets) {  // before anything is set: a refusal changes nothing
+    const std::string missing = wheelchair_bringup::missingFile(spec, stringOverrides(spec.name));
+    if (!missing.empty()) {
+      ROS_FATAL("%s: %s (a file the chair needs: see wheelchair_bringup/README.md)",
+                config_path.c_str(), missing.c_str());
+      return 1;
+    }
   }
   setParams("", config.global_params);
   if (!ros::param::has("~num_worker_threads"))  // read by the manager; a run may override it

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 
 using namespace wheelchair_bringup;
@@ -72,4 +73,48 @@ TEST(BringupConfig, BadFilesNameTheFileAndTheProblem) {
   expectError("nodelets: [\n", "bad YAML");
   expectError("num_worker_threads: 0\nnodelets:\n  - {name: a, type: x/A}\n", "num_worker_threads");
   EXPECT_THROW(loadBringupConfig("/nonexistent/chair.yaml", findFake), std::runtime_error);
+  // A misspelt key is refused with the known ones, at the top and in a nodelet.
+  expectError("num_worker_thread: 3\nnodelets:\n  - {name: a, type: x/A}\n",
+              "unknown key 'num_worker_thread' (known: nodelets, num_worker_threads, params)");
+  expectError("nodelets:\n  - {name: a, type: x/A, param: {k: 1}}\n",
+              "nodelet 'a': unknown key 'param' (known: name, params, remap, type)");
+  expectError("nodelets:\n  - {name: a, type: x/A, params: {f: $(env WHEELCHAIR_TEST_UNSET)}}\n",
+              "environment variable 'WHEELCHAIR_TEST_UNSET' is not set");
+  expectError("nodelets:\n  - {name: a, type: x/A, params: {f: $(arg x)}}\n",
+              "unknown substitution '$(arg ...)'");
+}
+
+TEST(BringupConfig, DeploymentPathsComeFromTheEnvironment) {
+  ::setenv("WHEELCHAIR_TEST_HOME", "/etc/wheelchair/home", 1);
+  const std::string path = writeTemp(
+      "nodelets:\n"
+      "  - name: map_server\n"
+      "    type: wheelchair_mapping/MapServerNodelet\n"
+      "    params: {map_file: $(env WHEELCHAIR_TEST_HOME)/map.yaml}\n");
+  EXPECT_EQ(loadBringupConfig(path, findFake).nodelets[0].params["map_file"].as<std::string>(),
+            "/etc/wheelchair/home/map.yaml");
+  ::unsetenv("WHEELCHAIR_TEST_HOME");
+  std::remove(path.c_str());
+}
+
+TEST(BringupConfig, ParametersNamedStarFileAreFilesTheChairNeeds) {
+  EXPECT_TRUE(isFileParameter("/map_server/map_file"));
+  EXPECT_TRUE(isFileParameter("places_file"));
+  EXPECT_TRUE(isFileParameter("chair_file"));
+  EXPECT_FALSE(isFileParameter("_file"));
+  EXPECT_FALSE(isFileParameter("map_frame"));
+  EXPECT_FALSE(isFileParameter("file_rate"));
+}
+
+TEST(BringupConfig, AMissingFileOfANodeletIsNamedWithItsKey) {
+  const std::string path = writeTemp(
+      "nodelets:\n"
+      "  - {name: hmi, type: x/Hmi, params: {places_file: /nonexistent/places.yaml}}\n");
+  const BringupConfig config = loadBringupConfig(path, findFake);
+  EXPECT_EQ(missingFile(config.nodelets[0]),
+            "/hmi/places_file: cannot read '/nonexistent/places.yaml'");
+  EXPECT_EQ(missingFile(config.nodelets[0], {{"places_file", path}}), "");  // an override wins
+  EXPECT_EQ(missingFile(config.nodelets[0], {{"places_file", path}, {"chair_file", "/no/chair"}}),
+            "/hmi/chair_file: cannot read '/no/chair'");
+  std::remove(path.c_str());
 }

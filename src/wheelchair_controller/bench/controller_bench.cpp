@@ -2,8 +2,8 @@
 // control step and MSEre with the dynamic terms (the paper's controller) and without (kinematic
 // baseline), on the model with a heavier rider, rolling resistance, encoders and pose noise.
 // Prints a JSON array (bench/controller/run). Usage: controller_bench [chair.yaml]
-#include <wheelchair_controller/closed_loop_simulation.h>
-#include <wheelchair_controller/test_paths.h>
+#include <wheelchair_controller_test/closed_loop_simulation.h>
+#include <wheelchair_controller_test/test_paths.h>
 
 #include <algorithm>
 #include <chrono>

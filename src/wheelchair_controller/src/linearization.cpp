@@ -70,8 +70,8 @@ Eigen::Vector2d rollingResistanceTorque(const Eigen::Vector2d& eta, const ChairP
       [&](double w) { return per_wheel * std::tanh(w * p.wheel_radius / kSmoothingSpeed); });
 }
 
-Vector5 configurationAtAxlePose(const Eigen::Vector3d& pose, const ChairParams& p) {
-  return wd::stateAtAxlePose(pose.x(), pose.y(), pose.z(), p).head<5>();
+Vector5 configurationAtAxlePose(const wheelchair_core::Pose2D& pose, const ChairParams& p) {
+  return wd::stateAtAxlePose(pose.x, pose.y, pose.yaw, p).head<5>();
 }
 
 }  // namespace wheelchair_controller

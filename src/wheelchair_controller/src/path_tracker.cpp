@@ -67,14 +67,13 @@ PathTracker::PathTracker(const ChairParams& chair, const TrackerConfig& config)
   wd::validate(chair_);
 }
 
-PreparedPath preparePath(const std::vector<Pose2>& path, const ChairParams& chair,
+PreparedPath preparePath(const std::vector<Pose2D>& path, const ChairParams& chair,
                          const TrackerConfig& config, double initial_speed) {
   PreparedPath out;
   out.initial_speed = initial_speed;
-  out.rejection = pathRejectionReason(path, kMinPathLength);
-  if (!out.rejection.empty()) return out;
+  std::shared_ptr<const SmoothPath> smooth = drivenPath(path, out.rejection);
+  if (!smooth) return out;
   try {
-    auto smooth = std::make_shared<SmoothPath>(path);
     out.trajectory = std::make_shared<PathOutputTrajectory>(smooth, chair.lookahead,
                                                             chair.cm_offset, config.path_limits,
                                                             config.limit_margin, initial_speed);
@@ -85,7 +84,7 @@ PreparedPath preparePath(const std::vector<Pose2>& path, const ChairParams& chai
   return out;
 }
 
-std::string PathTracker::setPath(const std::vector<Pose2>& path) {
+std::string PathTracker::setPath(const std::vector<Pose2D>& path) {
   return setPreparedPath(preparePath(path, chair_, config_, startSpeed()));
 }
 
@@ -162,13 +161,13 @@ std::string PathTracker::checkInputs(double now, const std::optional<PoseMeasure
   if (now - wheels.stamp > config_.stale_odometry_timeout)
     return format("stale odometry (%.3f s old)", now - wheels.stamp);
   if (!pose) return "no pose (localization lost)";
-  if (!pose->pose.allFinite() || !std::isfinite(pose->stamp)) return "non-finite pose";
+  if (!pose->pose.isFinite() || !std::isfinite(pose->stamp)) return "non-finite pose";
   if (now - pose->stamp > config_.stale_pose_timeout)
     return format("stale pose (%.3f s old)", now - pose->stamp);
   if (have_last_ && isActive(state_)) {
     const wd::State expected = predict(last_state_, last_torque_, pose->stamp - last_time_,
                                        config_.prediction_step, chair_);
-    const double jump = (wd::axlePose(expected, chair_).head<2>() - pose->pose.head<2>()).norm();
+    const double jump = (wd::axlePose(expected, chair_).head<2>() - pose->pose.position()).norm();
     if (jump > config_.pose_jump) return format("pose jump of %.2f m", jump);
   }
   return "";
@@ -190,16 +189,14 @@ void PathTracker::startPhases(const State& x) {
   const double l = chair_.lookahead;
   const PathPoint start = path_->at(0.0), end = path_->at(path_->length());
   const bool at_rest = std::abs(speed) < kAtRestSpeed;
-  if (at_rest && std::abs(std::remainder(start.heading - p.z(), 2.0 * M_PI)) >
-                     config_.start_heading_tolerance) {
+  if (at_rest && rotatesBeforePath(*path_, p.z(), config_)) {
     phases_.push_back({std::make_shared<RotationOutputTrajectory>(p.head<2>(), p.z(), start.heading,
                                                                   l, config_.rotation_limits),
                        TrackerState::kAligning});
   }
   phases_.push_back({path_trajectory_, TrackerState::kTracking});
   goal_heading_ = path_->goalHeading();
-  if (std::abs(std::remainder(goal_heading_ - end.heading, 2.0 * M_PI)) >
-      config_.goal_heading_tolerance) {
+  if (rotatesToGoalHeading(*path_, config_)) {
     phases_.push_back({std::make_shared<RotationOutputTrajectory>(
                            end.position, end.heading, goal_heading_, l, config_.rotation_limits),
                        TrackerState::kRotatingToGoal});

@@ -1,4 +1,5 @@
 #include <wheelchair_controller/smooth_path.h>
+#include <wheelchair_core/polygon.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +10,10 @@ namespace {
 
 constexpr double kMinPointSpacing = 1e-4;  // [m] consecutive points closer are duplicates
 
-std::vector<Eigen::Vector2d> distinctPoints(const std::vector<Pose2>& poses) {
+std::vector<Eigen::Vector2d> distinctPoints(const std::vector<Pose2D>& poses) {
   std::vector<Eigen::Vector2d> out;
-  for (const Pose2& p : poses) {
-    const Eigen::Vector2d xy = p.head<2>();
+  for (const Pose2D& p : poses) {
+    const Eigen::Vector2d xy = p.position();
     if (out.empty() || (xy - out.back()).norm() > kMinPointSpacing) out.push_back(xy);
   }
   return out;
@@ -71,31 +72,23 @@ std::vector<double> derivative(const std::vector<double>& x, double h) {
   return d;
 }
 
-double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                            const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double f = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + f * ab - p).norm();
-}
-
 }  // namespace
 
-std::string pathRejectionReason(const std::vector<Pose2>& poses, double min_length) {
+std::string pathRejectionReason(const std::vector<Pose2D>& poses, double min_length) {
   if (poses.empty()) return "empty path";
-  for (const Pose2& p : poses)
-    if (!p.allFinite()) return "non-finite pose in path";
+  for (const Pose2D& p : poses)
+    if (!p.isFinite()) return "non-finite pose in path";
   if (polylineLength(distinctPoints(poses)) < min_length) return "zero-length path";
   return "";
 }
 
-SmoothPath::SmoothPath(const std::vector<Pose2>& poses, double spacing,
+SmoothPath::SmoothPath(const std::vector<Pose2D>& poses, double spacing,
                        double smoothing_half_window)
     : spacing_(spacing) {
   const std::string reason = pathRejectionReason(poses, 2.0 * kMinPointSpacing);
   if (!reason.empty()) throw std::invalid_argument("SmoothPath: " + reason);
   planned_ = distinctPoints(poses);
-  goal_heading_ = poses.back().z();
+  goal_heading_ = poses.back().yaw;
   const int half = std::max(0, static_cast<int>(std::round(smoothing_half_window / spacing)));
   // Smooth twice (a triangular kernel), then resample so the spacing is uniform again.
   std::vector<Eigen::Vector2d> pts = resample(planned_, spacing);
@@ -140,7 +133,8 @@ double SmoothPath::distanceToPlanned(const Eigen::Vector2d& point) const {
   if (planned_.size() == 1) return (point - planned_.front()).norm();
   double best = std::numeric_limits<double>::infinity();
   for (size_t i = 1; i < planned_.size(); ++i)
-    best = std::min(best, pointSegmentDistance(point, planned_[i - 1], planned_[i]));
+    best =
+        std::min(best, wheelchair_core::pointSegmentDistance(point, planned_[i - 1], planned_[i]));
   return best;
 }
 

@@ -13,6 +13,7 @@
 #include <std_msgs/Empty.h>
 #include <std_msgs/String.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_msgs/WheelTorques.h>
 
 #include <atomic>
@@ -91,7 +92,8 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
   ros::Publisher odom_pub = nh.advertise<nav_msgs::Odometry>("odom", 10);
   ros::Publisher safety_pub = nh.advertise<std_msgs::Bool>("safety/stop", 1, true);
   ros::Publisher user_stop_pub = nh.advertise<std_msgs::Empty>("user_stop", 1);
-  ros::Publisher localized_pub = nh.advertise<std_msgs::String>("kld/localized", 1, true);
+  ros::Publisher localized_pub =
+      nh.advertise<wheelchair_msgs::LocalizationStatus>("localization/status", 1, true);
   tf2_ros::TransformBroadcaster tf;
   std::atomic<bool> publish_pose{true};
   std::atomic<double> pose_x{0.0};
@@ -146,8 +148,10 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
   } else if (fault == "user_stop") {
     user_stop_pub.publish(std_msgs::Empty());
   } else if (fault == "localization_lost") {
-    std_msgs::String s;
-    s.data = "test";
+    wheelchair_msgs::LocalizationStatus s;
+    s.state = wheelchair_msgs::LocalizationStatus::MISFIT;
+    s.localized = false;
+    s.detail = "test";
     localized_pub.publish(s);
   }
   EXPECT_TRUE(waitFor(stopped, 6.0)) << "status: " << status;
@@ -177,8 +181,9 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
     std_msgs::Bool clear;
     clear.data = false;
     safety_pub.publish(clear);
-    std_msgs::String localized;
-    localized.data = "localized";
+    wheelchair_msgs::LocalizationStatus localized;
+    localized.state = wheelchair_msgs::LocalizationStatus::LOCALIZED;
+    localized.localized = true;
     localized_pub.publish(localized);
     ros::WallDuration(1.0).sleep();
     EXPECT_TRUE(stopped()) << "clearing alone must not resume; status: " << status;

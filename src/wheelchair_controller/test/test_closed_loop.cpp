@@ -1,7 +1,7 @@
 // The controller in closed loop on the paper's model: the "real" chair integrated with RK4 at
 // 1 kHz, the controller at 50 Hz (its internal model discretized with RK2, as in the paper).
-#include <wheelchair_controller/closed_loop_simulation.h>
-#include <wheelchair_controller/test_paths.h>
+#include <wheelchair_controller_test/closed_loop_simulation.h>
+#include <wheelchair_controller_test/test_paths.h>
 
 #include <gtest/gtest.h>
 
@@ -116,7 +116,7 @@ TEST(ClosedLoop, InternalModelRK2At50HzMatchesTheRK4Plant) {
 }
 
 TEST(ClosedLoop, Figure6CosinePathFromAnOffsetStart) {
-  const std::vector<wc::Pose2> path = wc::cosinePath(0.3, 4.0, 8.0);
+  const std::vector<wc::Pose2D> path = wc::cosinePath(0.3, 4.0, 8.0);
   const wc::ClosedLoopResult r = wc::simulateClosedLoop(
       path, {0.0, 0.0, 0.0}, chair(), wc::TrackerConfig{}, mismatchedPlant(0.0, 6));
   ASSERT_EQ(r.final_state, wc::TrackerState::kGoalReached) << r.reason;
@@ -185,9 +185,9 @@ TEST(ClosedLoop, HeadingReachesTheGoalDespiteALocalizationCorrectionDuringTheFin
   // in-place rotation. Only P_l (l = 15 cm ahead of the axle) is controlled; a 3 cm sideways
   // correction of the measured pose during that rotation makes P_l's reference circle wrong
   // by 3 cm, i.e. a heading error near atan(0.03 / 0.15) = 0.2 rad when the rotation ends.
-  std::vector<wc::Pose2> path;
-  for (int i = 0; i <= 40; ++i) path.emplace_back(0.05 * i, 0.0, 0.0);
-  path.back().z() = M_PI / 2;
+  std::vector<wc::Pose2D> path;
+  for (int i = 0; i <= 40; ++i) path.push_back({0.05 * i, 0.0, 0.0});
+  path.back().yaw = M_PI / 2;
   wc::PlantConfig plant = mismatchedPlant(0.0, 1);
   const wc::ClosedLoopResult clean =
       wc::simulateClosedLoop(path, {0.0, 0.0, 0.0}, chair(), wc::TrackerConfig{}, plant);

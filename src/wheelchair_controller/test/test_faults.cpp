@@ -1,7 +1,8 @@
 // Every fault ends in a controlled stop: decelerate within the comfort limits, then zero torque
 // and the brake. The chair is driven on the model until it cruises, then the fault is injected.
 #include <wheelchair_controller/path_tracker.h>
-#include <wheelchair_controller/test_paths.h>
+#include <wheelchair_controller_test/axle_pose.h>
+#include <wheelchair_controller_test/test_paths.h>
 
 #include <gtest/gtest.h>
 
@@ -33,7 +34,7 @@ FaultRun run(const std::function<std::optional<wc::PoseMeasurement>(
   double prev_v = 0.0;
   for (int k = 0; k < 1000; ++k) {
     const double t = k * dt;
-    const wc::PoseMeasurement truth{t, wd::axlePose(x, p)};
+    const wc::PoseMeasurement truth{t, wc::axlePose2D(x, p)};
     std::optional<wc::PoseMeasurement> pose = truth;
     if (t >= t_fault) pose = inject(tracker, t, truth);
     r.last = tracker.update(t, pose, {t, x.tail<2>()});
@@ -100,7 +101,7 @@ TEST(Faults, EmptyPathStops) {
 
 TEST(Faults, PoseJumpOfOneMetreStops) {
   expectControlledStop(run([](wc::PathTracker&, double, wc::PoseMeasurement truth) {
-                         truth.pose.y() += 1.0;
+                         truth.pose.y += 1.0;
                          return std::optional<wc::PoseMeasurement>(truth);
                        }),
                        "pose jump");
@@ -125,7 +126,7 @@ TEST(Faults, LostLocalizationStops) {
 
 TEST(Faults, NonFinitePoseStops) {
   expectControlledStop(run([](wc::PathTracker&, double, wc::PoseMeasurement truth) {
-                         truth.pose.z() = NAN;
+                         truth.pose.yaw = NAN;
                          return std::optional<wc::PoseMeasurement>(truth);
                        }),
                        "non-finite pose");
@@ -166,7 +167,7 @@ TEST(Faults, UserStopStops) {
 TEST(Faults, ReleasedHoldResumesOnlyWithANewPath) {
   const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
   wc::PathTracker tracker(p, wc::TrackerConfig{});
-  const std::vector<wc::Pose2> path = wc::PathBuilder({0.0, 0.0, 0.0}).straight(2.0).poses();
+  const std::vector<wc::Pose2D> path = wc::PathBuilder({0.0, 0.0, 0.0}).straight(2.0).poses();
   const wc::PoseMeasurement pose{0.0, {0, 0, 0}};
   tracker.hold("localization", "localization lost: test");
   EXPECT_FALSE(tracker.setPath(path).empty());
@@ -228,7 +229,7 @@ TEST(Faults, ReachingTheGoalIsNoStopThatDropsTheNextPath) {
   wc::TrackerOutput out;
   for (int k = 0; k < 1500 && out.state != wc::TrackerState::kGoalReached; ++k) {
     const double t = k * 0.02;
-    out = tracker.update(t, wc::PoseMeasurement{t, wd::axlePose(x, p)}, {t, x.tail<2>()});
+    out = tracker.update(t, wc::PoseMeasurement{t, wc::axlePose2D(x, p)}, {t, x.tail<2>()});
     if (out.command.brake) x.tail<2>().setZero();
     for (int i = 0; i < 20 && !out.command.brake; ++i)
       x = wd::integrateRK4(x, out.command.torque, 1e-3, p);

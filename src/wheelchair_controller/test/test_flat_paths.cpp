@@ -1,7 +1,8 @@
 // The ten flat paths (flatTestPaths) fit the flat world: at every pose the chair's footprint,
 // grown by a margin, covers no occupied or unknown map cell and stays on the map.
-#include <wheelchair_controller/test_paths.h>
+#include <wheelchair_controller_test/test_paths.h>
 #include <wheelchair_core/map_io.h>
+#include <wheelchair_core/polygon.h>
 #include <wheelchair_description/chair_params.h>
 
 #include <gtest/gtest.h>
@@ -21,18 +22,13 @@ constexpr double kSample = 0.02;  // [m] footprint sampling (< the 5 cm cells)
 
 /// First footprint point (world) on a non-free cell at `pose`, or NaN if none.
 Eigen::Vector2d collision(const wm::OccupancyMap& map, const wd::ChairParams& chair,
-                          const wc::Pose2& pose) {
-  double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
-  for (const auto& v : chair.footprint) {
-    xmin = std::min(xmin, v.x());
-    xmax = std::max(xmax, v.x());
-    ymin = std::min(ymin, v.y());
-    ymax = std::max(ymax, v.y());
-  }
-  const double c = std::cos(pose.z()), s = std::sin(pose.z());
+                          const wc::Pose2D& pose) {
+  const wm::Box box = wm::boundingBox(chair.footprint);
+  const double xmin = box.min.x(), xmax = box.max.x(), ymin = box.min.y(), ymax = box.max.y();
+  const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
   for (double bx = xmin - kMargin; bx <= xmax + kMargin + 1e-9; bx += kSample) {
     for (double by = ymin - kMargin; by <= ymax + kMargin + 1e-9; by += kSample) {
-      const Eigen::Vector2d w(pose.x() + c * bx - s * by, pose.y() + s * bx + c * by);
+      const Eigen::Vector2d w(pose.x + c * bx - s * by, pose.y + s * bx + c * by);
       int ix, iy;
       if (!map.worldToCell(w.x(), w.y(), ix, iy) || map.at(ix, iy) != wm::kFree) return w;
     }
@@ -51,10 +47,11 @@ TEST(FlatPaths, FootprintStaysInFreeSpaceWithMargin) {
   const auto paths = wc::flatTestPaths();
   ASSERT_EQ(paths.size(), 10u);
   for (const wc::NamedPath& p : paths) {
-    for (const wc::Pose2& pose : p.poses) {
+    for (const wc::Pose2D& pose : p.poses) {
       const Eigen::Vector2d hit = collision(map, chair, pose);
-      EXPECT_FALSE(hit.allFinite()) << p.name << ": at (" << pose.transpose() << ") the chair "
-                                    << "touches (" << hit.transpose() << ")";
+      EXPECT_FALSE(hit.allFinite())
+          << p.name << ": at (" << pose.x << ", " << pose.y << ", " << pose.yaw << ") the chair "
+          << "touches (" << hit.transpose() << ")";
       if (hit.allFinite()) break;
     }
   }

@@ -1,7 +1,7 @@
 // Reference generation: jerk-limited profile, smooth path, off-tracking-free output reference.
 #include <wheelchair_controller/output_trajectory.h>
 #include <wheelchair_controller/start_offset.h>
-#include <wheelchair_controller/test_paths.h>
+#include <wheelchair_controller_test/test_paths.h>
 #include <wheelchair_description/chair_params.h>
 
 #include <gtest/gtest.h>

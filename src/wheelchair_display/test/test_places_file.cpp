@@ -14,7 +14,7 @@ TEST(PlacesFile, TypedNamesBecomeIdentifiers) {
 }
 
 TEST(PlacesFile, ANewNameMustBeFreeAndPlain) {
-  const std::vector<wheelchair_hmi::Place> places = {{"sofa", "living_room", 1, 1, 0}};
+  const std::vector<wheelchair_hmi::Place> places = {{"sofa", "living_room", {1, 1, 0}}};
   EXPECT_EQ(placeNameProblem("armchair", places), "");
   EXPECT_NE(placeNameProblem("sofa", places), "");
   EXPECT_NE(placeNameProblem("", places), "");
@@ -29,15 +29,15 @@ TEST(PlacesFile, SavedPlacesReadBackWithTheHmisReaderKeepingTheOtherKeys) {
            "  - {name: sofa, room: living_room, x: 3.2, y: 1.0, yaw: 3.1416}\n";
   }
   auto places = wheelchair_hmi::loadPlaces(path);
-  places.push_back({"by_the_window", "study", 7.25, 6.5, -1.2});
+  places.push_back({"by_the_window", "study", {7.25, 6.5, -1.2}});
   savePlaces(path, places);
   const auto back = wheelchair_hmi::loadPlaces(path);
   ASSERT_EQ(back.size(), 2u);
   EXPECT_EQ(back[1].name, "by_the_window");
   EXPECT_EQ(back[1].room, "study");
-  EXPECT_NEAR(back[1].x, 7.25, 1e-9);
-  EXPECT_NEAR(back[1].yaw, -1.2, 1e-9);
-  EXPECT_NEAR(back[0].yaw, 3.1416, 1e-9);
+  EXPECT_NEAR(back[1].pose.x, 7.25, 1e-9);
+  EXPECT_NEAR(back[1].pose.yaw, -1.2, 1e-9);
+  EXPECT_NEAR(back[0].pose.yaw, 3.1416, 1e-9);
   const YAML::Node root = YAML::LoadFile(path);
   EXPECT_EQ(root["map"].as<std::string>(), "flat.yaml");
   ASSERT_EQ(root["rooms"].size(), 3u);  // the new room is listed
@@ -53,7 +53,7 @@ TEST(PlacesFile, TheTestWorldsPlacesSurviveARewrite) {
   ASSERT_EQ(back.size(), places.size());
   for (size_t i = 0; i < places.size(); ++i) {
     EXPECT_EQ(back[i].name, places[i].name);
-    EXPECT_NEAR(back[i].x, places[i].x, 1e-9);
+    EXPECT_NEAR(back[i].pose.x, places[i].pose.x, 1e-9);
   }
   std::remove(path.c_str());
 }

@@ -5,9 +5,9 @@ namespace wheelchair_display {
 namespace {
 
 std::vector<wheelchair_hmi::Place> threeRooms() {
-  return {{"sofa", "living_room", 1, 1, 0}, {"tv", "living_room", 3, 2, 0},
-          {"sink", "kitchen", 7, 1, 0},     {"stove", "kitchen", 8, 2, 0},
-          {"bed", "bedroom", 2, 9, 0},      {"lamp", "living_room", 1.5, 2.5, 0}};
+  return {{"sofa", "living_room", {1, 1, 0}}, {"tv", "living_room", {3, 2, 0}},
+          {"sink", "kitchen", {7, 1, 0}},     {"stove", "kitchen", {8, 2, 0}},
+          {"bed", "bedroom", {2, 9, 0}},      {"lamp", "living_room", {1.5, 2.5, 0}}};
 }
 
 }  // namespace
@@ -26,7 +26,7 @@ TEST(Scene, RoomsAreTheAreasAroundTheirPlacesInFileOrder) {
 
 TEST(Scene, ThePointerPicksTheSmallerOfTwoOverlappingRooms) {
   const std::vector<wheelchair_hmi::Place> places = {
-      {"a", "hall", 0, 0, 0}, {"b", "hall", 10, 10, 0}, {"c", "closet", 5, 5, 0}};
+      {"a", "hall", {0, 0, 0}}, {"b", "hall", {10, 10, 0}}, {"c", "closet", {5, 5, 0}}};
   EXPECT_EQ(roomAt(roomAreas(places, 0.5), {5.2, 5.1}), 1);
 }
 

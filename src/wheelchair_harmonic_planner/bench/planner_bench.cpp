@@ -1,16 +1,20 @@
 // Measuring binary of bench/planners: one case (a world or a generated maze), every method,
 // JSON objects {"case","method","metric","value","unit"} on stdout (one per line, the run script
-// joins them), and optionally a PNG with the paths over the map.
+// joins them), and optionally a PNG with the paths over the map. The harmonic planner is this
+// package's; the OMPL plugin is loaded by name through pluginlib (the workspace sourced), as the
+// planner host loads it.
+#include <wheelchair_core/config.h>
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_harmonic_planner/harmonic_planner.h>
-#include <wheelchair_harmonic_planner/maze.h>
-#include <wheelchair_harmonic_planner/ompl_planner.h>
-#include <wheelchair_harmonic_planner/path_metrics.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
+#include <wheelchair_planner/path_metrics.h>
+#include <wheelchair_planner_test/maze.h>
 
 #include <mrpt/nav/planners/PlannerSimple2D.h>
+#include <yaml-cpp/yaml.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <pluginlib/class_loader.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -22,6 +26,7 @@
 #include <vector>
 
 using namespace wheelchair_harmonic_planner;
+using namespace wheelchair_planner;
 
 namespace {
 
@@ -138,19 +143,18 @@ double cpuSeconds() {
   return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
-/// A planner's map-dependent work, done when the map arrives (initialize): the C-space and, for
+/// A planner's map-dependent work, done when the map arrives (setMap): the C-space and, for
 /// the harmonic planner, the map's factorization. `done`: when it ended (the plan's timer).
 struct Prepared {
   std::chrono::steady_clock::time_point started, done;
   double cpu = 0.0;  ///< [s]
 };
 
-Prepared prepare(GlobalPlanner& planner, const std::string& name,
-                 const wheelchair_core::OccupancyMap& map, const ParameterMap& params) {
+Prepared prepare(GlobalPlanner& planner, const wheelchair_core::OccupancyMap& map) {
   Prepared p;
   const double cpu0 = cpuSeconds();
   p.started = std::chrono::steady_clock::now();
-  planner.initialize(name, map, params);
+  planner.setMap(map);
   p.done = std::chrono::steady_clock::now();
   p.cpu = cpuSeconds() - cpu0;
   return p;
@@ -231,12 +235,13 @@ void solveColdAndWarm(const ConfigSpace& cs, const Pose2D& start, const Pose2D& 
 /// dropped on the free cell nearest the map centre that is not the start or goal cell): the
 /// planner warm-starts from its last solution.
 void newGoalAndReplan(const wheelchair_core::OccupancyMap& map, const ConfigSpace& cs,
-                      const ParameterMap& common, const Pose2D& start, const Pose2D& goal) {
+                      const PlannerSettings& settings, const Pose2D& start, const Pose2D& goal) {
   int gx, gy, sx, sy;
   cs.worldToCell(goal.x, goal.y, gx, gy);
   cs.worldToCell(start.x, start.y, sx, sy);
   HarmonicPlanner planner;
-  planner.initialize("harmonic", map, common);
+  planner.configure(settings, HarmonicPlannerConfig());
+  planner.setMap(map);
   std::vector<Pose2D> plan;
   Certificate cert;
   planner.makePlan(start, goal, plan, cert);
@@ -262,7 +267,7 @@ void newGoalAndReplan(const wheelchair_core::OccupancyMap& map, const ConfigSpac
     for (int ix = bx - 2; ix < bx + 2; ++ix) changed.at(ix, iy) = wheelchair_core::kOccupied;
   const double cpu1 = cpuSeconds();
   const auto t1 = std::chrono::steady_clock::now();
-  planner.initialize("harmonic", changed, common);
+  planner.setMap(changed);
   const bool ok = planner.makePlan(start, goal, plan, cert);
   emit("harmonic_replan", "success", ok ? 1.0 : 0.0, "bool");
   emit("harmonic_replan", "time", seconds(t1) * 1e3, "ms");
@@ -294,9 +299,11 @@ int main(int argc, char** argv) {
     mazeRouteEnds(map, n, idx(start.x) + n * idx(start.y), idx(goal.x) + n * idx(goal.y), start,
                   goal);
   }
-  const ParameterMap common{{"inscribed_radius", "0.31"}, {"seed", "1"}};
+  // The chair of chair.yaml: its footprint, its half width (0.31 m) as the inscribed radius.
+  const PlannerSettings settings = plannerSettings(
+      wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath()));
   const double cspace_cpu0 = cpuSeconds();
-  const ConfigSpace cs(map, configSpaceParams(common));
+  const ConfigSpace cs(map, settings.cspace);
   emit("harmonic", "cspace_cpu_time", (cpuSeconds() - cspace_cpu0) * 1e3, "ms");
   const double shortest = gridShortest(cs, start, goal);
   emit("grid_dijkstra", "length", shortest, "m");
@@ -305,23 +312,22 @@ int main(int argc, char** argv) {
           goal.y, goal.yaw);
 
   // harmonic: cold plan (C-space + solve + descent) with each solver: the default direct
-  // log-space LDL^T, SOR (capped at sor_max sweeps, argv[8], so that 2048^2 stays short) and the
-  // experimental multigrid (capped at 200 V-cycles). Wall and process CPU time.
+  // log-space LDL^T and SOR (capped at sor_max sweeps, argv[8], so that 2048^2 stays short).
+  // Wall and process CPU time.
   const std::string sor_max = argc > 8 ? argv[8] : "20000";
   // "rate" (argv[9]): one of several start/goal pairs for the success rate: the default solver
   // and the other planners only, no per-solver profile.
   const bool rate_only = argc > 9 && std::string(argv[9]) == "rate";
   const std::vector<std::string> solvers =
-      rate_only ? std::vector<std::string>{"direct"}
-                : std::vector<std::string>{"direct", "sor", "multigrid"};
+      rate_only ? std::vector<std::string>{"direct"} : std::vector<std::string>{"direct", "sor"};
   for (const std::string& solver : solvers) {
     const std::string method = solver == "direct" ? "harmonic" : "harmonic_" + solver;
     HarmonicPlanner planner;
-    ParameterMap p = common;
-    p["solver"] = solver;
-    if (solver == "multigrid") p["max_iterations"] = "200";
-    if (solver == "sor") p["max_iterations"] = sor_max;
-    const Prepared prepared = prepare(planner, method, map, p);
+    HarmonicPlannerConfig config;
+    config.solver = solver;
+    if (solver == "sor") config.solver_params.max_iterations = std::stoi(sor_max);
+    planner.configure(settings, config);
+    const Prepared prepared = prepare(planner, map);
     const double cpu0 = cpuSeconds();
     std::vector<Pose2D> plan;
     Certificate cert;
@@ -334,25 +340,38 @@ int main(int argc, char** argv) {
     emit(method, "cpu_time", plan_cpu * 1e3, "ms");
     emit(method, "first_plan_cpu_time", (prepared.cpu + plan_cpu) * 1e3, "ms");
     emit(method, "solver_iterations", cert.solver_iterations,
-         solver == "multigrid" ? "cycles" : (solver == "sor" ? "sweeps" : "solves+sweeps"));
+         solver == "sor" ? "sweeps" : "solves+sweeps");
     emit(method, "solver_residual", cert.solver_residual, "relative");
     if (ok) emit(method, "min_gradient", cert.min_gradient, "1/m");
     if (ok) emit(method, "plateau_steps", cert.plateau_steps, "steps");
     if (ok && solver == "direct") drawn.push_back({"harmonic", plan});
     if (solver == "direct" && !rate_only) {
       solveColdAndWarm(cs, start, goal);
-      newGoalAndReplan(map, cs, common, start, goal);
+      newGoalAndReplan(map, cs, settings, start, goal);
     }
   }
+  pluginlib::ClassLoader<GlobalPlanner> loader("wheelchair_planner",
+                                               "wheelchair_planner::GlobalPlanner");
   for (const std::string algo : {"RRTConnect", "RRTstar", "PRMstar", "BITstar"}) {
-    OmplPlanner planner;
-    ParameterMap p = common;
-    p["algorithm"] = algo;
-    p["time_limit"] = algo == "RRTConnect" ? "5.0" : "2.0";
-    const Prepared prepared = prepare(planner, "ompl", map, p);
+    boost::shared_ptr<GlobalPlanner> planner;
+    try {
+      planner = loader.createInstance("wheelchair_ompl_planner/OmplPlanner");
+    } catch (const pluginlib::PluginlibException& e) {
+      fprintf(stderr, "no OMPL plugin (source the workspace): %s\n", e.what());
+      break;
+    }
+    YAML::Node keys;
+    keys["algorithm"] = algo;
+    keys["time_limit"] = algo == "RRTConnect" ? 5.0 : 2.0;
+    keys["seed"] = 1;
+    const wheelchair_core::YamlParameterSource source(keys, "planner_bench");
+    wheelchair_core::ConfigReader reader(source);
+    planner->configure(settings, reader);
+    reader.rejectUnknown();
+    const Prepared prepared = prepare(*planner, map);
     std::vector<Pose2D> plan;
     Certificate cert;
-    const bool ok = planner.makePlan(start, goal, plan, cert);
+    const bool ok = planner->makePlan(start, goal, plan, cert);
     const double plan_seconds = seconds(prepared.done);
     report("ompl_" + algo, ok, plan_seconds, plan, cs, shortest);
     emitPreparation("ompl_" + algo, prepared, plan_seconds);

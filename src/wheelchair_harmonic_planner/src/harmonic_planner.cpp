@@ -1,57 +1,65 @@
-#include <wheelchair_harmonic_planner/footprint_planning.h>
 #include <wheelchair_harmonic_planner/harmonic_planner.h>
-#include <wheelchair_harmonic_planner/path_metrics.h>
-#include <wheelchair_harmonic_planner/plan_failure.h>
-
-#include <pluginlib/class_list_macros.hpp>
+#include <wheelchair_planner/path_metrics.h>
+#include <wheelchair_planner/plan_failure.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 namespace wheelchair_harmonic_planner {
 
-ConfigSpaceParams configSpaceParams(const ParameterMap& params) {
-  ConfigSpaceParams p;
-  p.inscribed_radius = getParam(params, "inscribed_radius", p.inscribed_radius);
-  p.min_clearance = getParam(params, "min_clearance", p.min_clearance);
-  p.clearance_band = getParam(params, "clearance_band", p.clearance_band);
-  p.band_conductance = getParam(params, "band_conductance", p.band_conductance);
-  p.unknown_is_obstacle = getParam(params, "unknown_is_obstacle", p.unknown_is_obstacle);
-  validate(p);
-  return p;
+using wheelchair_planner::finishPlan;
+
+std::string HarmonicPlannerConfig::validate() const {
+  wheelchair_core::ConfigChecks checks;
+  try {
+    solverMethodFromName(solver);
+  } catch (const std::invalid_argument& e) {
+    checks.check(false, e.what());
+  }
+  const HarmonicSolverParams& s = solver_params;
+  checks.positive("tolerance", s.tolerance)
+      .check(s.max_iterations >= 1, "max_iterations must be >= 1")
+      .check(s.omega >= 0.0 && s.omega < 2.0, "omega must lie in [0, 2)")
+      .check(s.sweeps_per_rescale >= 1, "sweeps_per_rescale must be >= 1");
+  return checks.result();
 }
 
-void HarmonicPlanner::initialize(const std::string& name, const wheelchair_core::OccupancyMap& map,
-                                 const ParameterMap& params) {
-  name_ = name;
-  HarmonicSolverParams s;
-  s.tolerance = getParam(params, "tolerance", s.tolerance);
-  s.max_iterations = static_cast<int>(getParam(params, "max_iterations", 1.0 * s.max_iterations));
-  s.omega = getParam(params, "omega", s.omega);
-  s.sweeps_per_rescale =
-      static_cast<int>(getParam(params, "sweeps_per_rescale", 1.0 * s.sweeps_per_rescale));
-  if (!(s.tolerance > 0.0) || s.max_iterations < 1 || s.omega < 0.0 || s.omega >= 2.0) {
-    throw std::invalid_argument(
-        "HarmonicPlanner: tolerance > 0, max_iterations >= 1 and "
-        "omega in [0, 2) are required");
-  }
-  s.method = solverMethodFromName(getParam(params, "solver", std::string("direct")));
-  if (s.method == HarmonicSolverParams::Method::kMultigrid && params.count("max_iterations") == 0) {
-    s.max_iterations = 2000;  // V-cycles
-  }
-  solver_params_ = s;
-  prepare_on_map_ = getParam(params, "prepare_on_map", true);
-  const ConfigSpaceParams cspace_params = configSpaceParams(params);
-  footprint_params_ = footprintPlanningParams(params, cspace_params);
-  checker_.reset();
+void readHarmonicPlannerConfig(wheelchair_core::ConfigReader& reader,
+                               HarmonicPlannerConfig& config) {
+  reader.read("solver", config.solver);
+  reader.read("tolerance", config.solver_params.tolerance);
+  reader.read("max_iterations", config.solver_params.max_iterations);
+  reader.read("omega", config.solver_params.omega);
+  reader.read("sweeps_per_rescale", config.solver_params.sweeps_per_rescale);
+  reader.read("prepare_on_map", config.prepare_on_map);
+}
+
+void HarmonicPlanner::configure(const PlannerSettings& settings,
+                                wheelchair_core::ConfigReader& reader) {
+  configure(settings, wheelchair_planner::readPluginConfig<HarmonicPlannerConfig>(
+                          reader, readHarmonicPlannerConfig));
+}
+
+void HarmonicPlanner::configure(const PlannerSettings& settings,
+                                const HarmonicPlannerConfig& config) {
+  if (const std::string problem = config.validate(); !problem.empty())
+    throw wheelchair_core::ConfigError("HarmonicPlanner: " + problem);
+  settings_ = settings;
+  config_ = config;
+  config_.solver_params.method = solverMethodFromName(config.solver);
+}
+
+void HarmonicPlanner::setMap(const wheelchair_core::OccupancyMap& map) {
   factor_cache_.reset();  // its factors belong to the C-space replaced here
-  cspace_ = std::make_unique<ConfigSpace>(map, cspace_params);
-  checker_ = std::make_unique<FootprintChecker>(*cspace_, footprint_params_.footprint);
+  map_.reset();
+  map_ = std::make_unique<wheelchair_planner::PlanningMap>(map, settings_);
   map_geometry_ = map;
   map_geometry_.data.clear();
   solution_current_ = false;  // the previous solution stays as a warm start
-  if (prepare_on_map_ && !solution_) prepareHarmonicFactor(*cspace_, solver_params_, factor_cache_);
+  if (config_.prepare_on_map && !solution_)
+    prepareHarmonicFactor(map_->cspace(), config_.solver_params, factor_cache_);
 }
 
 bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
@@ -62,14 +70,15 @@ bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vec
   cert.planner = "HarmonicPlanner";
   const auto finish = [&](bool ok) { return finishPlan(ok, t0, plan, cert); };
   int sx, sy, gx, gy;
-  if (!checkEndpoints(cspace_.get(), start, goal, sx, sy, gx, gy, cert.failure_reason)) {
+  if (!wheelchair_planner::checkEndpoints(configSpace(), start, goal, sx, sy, gx, gy,
+                                          cert.failure_reason)) {
     return finish(false);
   }
   const bool same_goal = solution_ && solution_->goal_ix == gx && solution_->goal_iy == gy;
   if (!(same_goal && solution_current_)) {
     // A new goal: the old field's storage is recycled (the factors for this map are cached).
     if (solution_ && !same_goal) factor_cache_.spare = std::move(solution_->log_u);
-    HarmonicSolution next = solveHarmonic(*cspace_, gx, gy, solver_params_,
+    HarmonicSolution next = solveHarmonic(map_->cspace(), gx, gy, config_.solver_params,
                                           same_goal ? &*solution_ : nullptr, &factor_cache_);
     solution_ = std::move(next);
     solution_current_ = true;
@@ -89,7 +98,7 @@ bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vec
     cert.failure_reason = "start and goal are not connected in the configuration space";
     return finish(false);
   }
-  DescentResult d = descend(*cspace_, *solution_, start.x, start.y, descent_params_);
+  DescentResult d = descend(map_->cspace(), *solution_, start.x, start.y, descent_params_);
   cert.descent_reached_goal = d.reached_goal;
   cert.plateau_steps = d.fallback_steps;
   cert.min_gradient = d.min_gradient;
@@ -101,15 +110,10 @@ bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vec
   plan.front().x = start.x;
   plan.front().y = start.y;
   plan.push_back(goal);
-  assignHeadings(plan, goal.yaw);
-  if (!pathIsCollisionFree(*cspace_, plan)) {
-    cert.failure_reason = "internal error: descent path leaves the free C-space";
-    return finish(false);
-  }
-  cert.path_stage = "harmonic";
-  const bool ok = enforceFootprint(*checker_, footprint_params_, start, goal, plan, cert);
-  fillPathFigures(*cspace_, plan, cert);
-  return finish(ok);
+  wheelchair_planner::assignHeadings(plan, goal.yaw);
+  return finish(map_->gateFirstStagePath(settings_.gate, "harmonic",
+                                         "internal error: descent path leaves the free C-space",
+                                         start, goal, plan, cert));
 }
 
 bool HarmonicPlanner::potentialGrid(wheelchair_core::OccupancyMap& grid) const {
@@ -132,6 +136,3 @@ bool HarmonicPlanner::potentialGrid(wheelchair_core::OccupancyMap& grid) const {
 }
 
 }  // namespace wheelchair_harmonic_planner
-
-PLUGINLIB_EXPORT_CLASS(wheelchair_harmonic_planner::HarmonicPlanner,
-                       wheelchair_harmonic_planner::GlobalPlanner)

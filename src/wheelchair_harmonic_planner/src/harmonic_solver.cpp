@@ -1,5 +1,4 @@
 #include <wheelchair_harmonic_planner/harmonic_solver.h>
-#include <wheelchair_harmonic_planner/scaled_multigrid.h>
 
 #include "harmonic_stencil.h"
 #include "log_cholesky.h"
@@ -46,9 +45,12 @@ HarmonicSolverParams::Method solverMethodFromName(const std::string& name) {
   using Method = HarmonicSolverParams::Method;
   if (name == "direct") return Method::kDirect;
   if (name == "sor") return Method::kSor;
-  if (name == "multigrid") return Method::kMultigrid;
-  throw std::invalid_argument("harmonic solver must be 'direct', 'sor' or 'multigrid', not '" +
-                              name + "'");
+  if (name == "multigrid") {
+    throw std::invalid_argument(
+        "harmonic solver 'multigrid' was removed (it did not converge on large mazes): use "
+        "'direct' (the default) or 'sor'");
+  }
+  throw std::invalid_argument("harmonic solver must be 'direct' or 'sor', not '" + name + "'");
 }
 
 bool HarmonicSolution::reachable(int ix, int iy) const {
@@ -155,34 +157,6 @@ void solveDirect(const ConfigSpace& cs, const Stencil& stencil, const HarmonicSo
   solveSor(cs, stencil, params, !factor->ok() && !sol.warm_started, sol);
 }
 
-/// V-cycles on the rescaled equation, rescaling after every params.cycles_per_rescale cycles.
-void solveMultigrid(const ConfigSpace& cs, const Stencil& stencil,
-                    const HarmonicSolverParams& params, HarmonicSolution& sol) {
-  const size_t n = sol.log_u.size();
-  std::vector<uint8_t> unknown(n, 0);
-  std::vector<double> weight(4 * n, 0.0);
-  for (size_t c = 0; c < stencil.cells.size(); ++c) {
-    unknown[stencil.cells[c]] = 1;
-    std::copy_n(&stencil.weight[4 * c], 4, &weight[4 * stencil.cells[c]]);
-  }
-  ScaledMultigrid mg(cs.width(), cs.height(), std::move(unknown), std::move(weight),
-                     cs.index(sol.goal_ix, sol.goal_iy), params.multigrid);
-  const int max_iter = std::max(1, params.max_iterations);
-  while (true) {
-    sol.residual = mg.rescale(sol.log_u);
-    if (sol.residual < params.tolerance) {
-      sol.converged = true;
-      break;
-    }
-    if (sol.iterations >= max_iter) break;
-    for (int c = 0; c < std::max(1, params.cycles_per_rescale) && sol.iterations < max_iter;
-         ++c, ++sol.iterations) {
-      mg.vcycle();
-    }
-    mg.correct(sol.log_u);
-  }
-}
-
 }  // namespace
 
 bool prepareHarmonicFactor(const ConfigSpace& cs, const HarmonicSolverParams& params,
@@ -251,10 +225,8 @@ HarmonicSolution solveHarmonic(const ConfigSpace& cs, int goal_ix, int goal_iy,
   initialGuess(cs, stencil, dist, sol.warm_started ? warm_start : nullptr, sol);
   if (direct) {
     solveDirect(cs, stencil, params, factor_cache, sol);
-  } else if (params.method == HarmonicSolverParams::Method::kSor) {
-    solveSor(cs, stencil, params, !sol.warm_started, sol);
   } else {
-    solveMultigrid(cs, stencil, params, sol);
+    solveSor(cs, stencil, params, !sol.warm_started, sol);
   }
   return sol;
 }

@@ -1,7 +1,7 @@
-// The discrete operator shared by the harmonic solvers (SOR and multigrid): internal header.
+// The discrete operator shared by the harmonic solvers (direct and SOR): internal header.
 #pragma once
 
-#include <wheelchair_harmonic_planner/config_space.h>
+#include <wheelchair_harmonic_planner/harmonic_solver.h>
 
 #include <cstdint>
 #include <vector>

@@ -18,7 +18,6 @@
 // (ordering_update.h), which keeps the factor as local as AMD's.
 #pragma once
 
-#include <wheelchair_harmonic_planner/config_space.h>
 #include <wheelchair_harmonic_planner/harmonic_solver.h>
 
 #include "large_blocks.h"

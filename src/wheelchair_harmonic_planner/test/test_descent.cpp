@@ -4,8 +4,8 @@
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_harmonic_planner/gradient_descent.h>
 #include <wheelchair_harmonic_planner/harmonic_solver.h>
-#include <wheelchair_harmonic_planner/maze.h>
-#include <wheelchair_harmonic_planner/path_metrics.h>
+#include <wheelchair_planner/path_metrics.h>
+#include <wheelchair_planner_test/maze.h>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +13,7 @@
 #include <fstream>
 
 using namespace wheelchair_harmonic_planner;
+using namespace wheelchair_planner;
 using wheelchair_core::OccupancyMap;
 
 namespace {

@@ -4,7 +4,7 @@
 #include "../src/log_cholesky.h"
 #include "../src/ordering_update.h"
 
-#include <wheelchair_harmonic_planner/maze.h>
+#include <wheelchair_planner_test/maze.h>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 #include <random>
 
 using namespace wheelchair_harmonic_planner;
+using namespace wheelchair_planner;
 using wheelchair_core::OccupancyMap;
 
 namespace {

@@ -1,21 +1,37 @@
-// The two planner plugins used directly (no ROS): the flat's 80 cm doorways, clearance where
-// space allows, failures with reasons, every OMPL planner on a maze.
+// The harmonic planner plugin used directly (no ROS): the flat's 80 cm doorways, clearance where
+// space allows, the map prepared on arrival, failures with reasons, its own keys.
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_harmonic_planner/harmonic_planner.h>
-#include <wheelchair_harmonic_planner/maze.h>
-#include <wheelchair_harmonic_planner/ompl_planner.h>
-#include <wheelchair_harmonic_planner/path_metrics.h>
+#include <wheelchair_planner/path_metrics.h>
+#include <wheelchair_planner_test/maze.h>
+#include <wheelchair_planner_test/planner_contract.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <string>
 
 using namespace wheelchair_harmonic_planner;
+using wheelchair_planner::makeCorridor;
+using wheelchair_planner::makeMaze;
+using wheelchair_planner::mazePassageCentre;
 
 namespace {
 
 double distanceTo(const Pose2D& p, double x, double y) { return std::hypot(p.x - x, p.y - y); }
+
+/// The settings the host gives for the chair of wheelchair_description's chair.yaml.
+PlannerSettings chairSettings() {
+  return wheelchair_planner::plannerSettings(
+      wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath()));
+}
+
+HarmonicPlannerConfig lazy() {
+  HarmonicPlannerConfig config;
+  config.prepare_on_map = false;
+  return config;
+}
 
 }  // namespace
 
@@ -25,7 +41,8 @@ TEST(HarmonicPlanner, PassesThe80cmDoorsOfFlatAndKeeps20cmInOpenSpace) {
   const std::string path = std::string(WORLDS_DIR) + "/flat.yaml";
   if (!std::ifstream(path).good()) GTEST_SKIP() << "test world not found: " << path;
   HarmonicPlanner planner;
-  planner.initialize("harmonic", wheelchair_core::loadMap(path), {{"inscribed_radius", "0.31"}});
+  planner.configure(chairSettings(), HarmonicPlannerConfig());
+  planner.setMap(wheelchair_core::loadMap(path));
   std::vector<Pose2D> plan;
   Certificate cert;
   ASSERT_TRUE(planner.makePlan({2.90, 7.25, 0.0}, {8.80, 7.50, 0.0}, plan, cert))
@@ -61,11 +78,11 @@ TEST(HarmonicPlanner, FactorsANewMapOnArrivalAndTheFirstGoalOnlySolves) {
   mazePassageCentre(0, 0, 36, 4, 0.05, sx, sy);
   mazePassageCentre(3, 3, 36, 4, 0.05, gx, gy);
   const Pose2D start{sx, sy, 0.0}, goal{gx, gy, 0.0};
-  const ParameterMap lazy{{"inscribed_radius", "0.31"}, {"prepare_on_map", "false"}};
-  const ParameterMap eager{{"inscribed_radius", "0.31"}};
   HarmonicPlanner late, early;
-  late.initialize("late", maze, lazy);
-  early.initialize("early", maze, eager);
+  late.configure(chairSettings(), lazy());
+  early.configure(chairSettings(), HarmonicPlannerConfig());
+  late.setMap(maze);
+  early.setMap(maze);
   EXPECT_EQ(late.factorCache().factorizations, 0);
   EXPECT_EQ(early.factorCache().factorizations, 1);
   std::vector<Pose2D> late_plan, early_plan;
@@ -84,64 +101,33 @@ TEST(HarmonicPlanner, FactorsANewMapOnArrivalAndTheFirstGoalOnlySolves) {
   auto changed = maze;
   for (int iy = 150; iy < 154; ++iy)
     for (int ix = 20; ix < 24; ++ix) changed.at(ix, iy) = wheelchair_core::kOccupied;
-  early.initialize("early", changed, eager);
+  early.setMap(changed);
   EXPECT_EQ(early.factorCache().factorizations, 1);
   EXPECT_TRUE(early.makePlan(start, goal, early_plan, early_cert)) << early_cert.failure_reason;
   EXPECT_TRUE(early_cert.warm_started);
-  HarmonicPlanner bad;
-  EXPECT_THROW(bad.initialize("bad", maze, {{"prepare_on_map", "often"}}), std::invalid_argument);
 }
 
 TEST(HarmonicPlanner, FailsClearlyForBadStartsAndGoals) {
-  auto map = makeCorridor(6.0, 1.2, 0.05);
-  for (int iy = 0; iy < map.height; ++iy) map.at(60, iy) = wheelchair_core::kOccupied;
-  for (GlobalPlanner* planner :
-       std::initializer_list<GlobalPlanner*>{new HarmonicPlanner, new OmplPlanner}) {
-    std::unique_ptr<GlobalPlanner> owner(planner);
-    planner->initialize("p", map, {{"time_limit", "0.2"}});
-    std::vector<Pose2D> plan;
-    Certificate cert;
-    const Pose2D ok{1.0, 0.7, 0.0};
-    EXPECT_FALSE(planner->makePlan(ok, {3.02, 0.7, 0.0}, plan, cert));
-    EXPECT_NE(cert.failure_reason.find("goal"), std::string::npos) << cert.failure_reason;
-    EXPECT_NE(cert.failure_reason.find("obstacle"), std::string::npos) << cert.failure_reason;
-    EXPECT_TRUE(plan.empty());
-    EXPECT_FALSE(planner->makePlan({-1.0, 0.7, 0.0}, ok, plan, cert));
-    EXPECT_NE(cert.failure_reason.find("outside the map"), std::string::npos);
-    EXPECT_FALSE(planner->makePlan(ok, {5.0, 0.7, 0.0}, plan, cert));  // beyond the wall
-    EXPECT_FALSE(cert.failure_reason.empty());
-    EXPECT_TRUE(plan.empty());
-    EXPECT_FALSE(planner->makePlan(ok, {NAN, 0.7, 0.0}, plan, cert));
-    EXPECT_NE(cert.failure_reason.find("not finite"), std::string::npos);
-  }
+  HarmonicPlanner planner;
+  planner.configure(chairSettings(), HarmonicPlannerConfig());
+  wheelchair_planner::expectClearFailuresForBadStartsAndGoals(planner);
 }
 
-TEST(OmplPlanner, EveryPlannerFindsACollisionFreePathThroughAMaze) {
-  const auto maze = makeMaze(120, 16, 4, 3);
-  ConfigSpaceParams cp;
-  const ConfigSpace cs(maze, cp);
-  double sx, sy, gx, gy;
-  mazePassageCentre(0, 0, 16, 4, 0.05, sx, sy);
-  mazePassageCentre(4, 4, 16, 4, 0.05, gx, gy);
-  for (const std::string type : {"RRTConnect", "RRTstar", "PRMstar", "BITstar"}) {
-    OmplPlanner planner;
-    // The 0.8 m passages are too narrow for the chair's 1.1 m body to turn: this test is
-    // about the sampling stage, with a body that fits in the C-space's disc.
-    planner.initialize("ompl", maze,
-                       {{"algorithm", type},
-                        {"time_limit", "1.0"},
-                        {"simplify", "true"},
-                        {"footprint", "0.2,0.2;-0.2,0.2;-0.2,-0.2;0.2,-0.2"}});
-    std::vector<Pose2D> plan;
-    Certificate cert;
-    ASSERT_TRUE(planner.makePlan({sx, sy, 0.0}, {gx, gy, 1.0}, plan, cert))
-        << type << ": " << cert.failure_reason;
-    EXPECT_TRUE(pathIsCollisionFree(cs, plan)) << type;
-    EXPECT_NEAR(plan.back().x, gx, 1e-9);
-    EXPECT_DOUBLE_EQ(plan.back().yaw, 1.0);
-    // Sampling planners check motions at discrete steps: half a cell of tolerance.
-    EXPECT_GE(cert.min_clearance, 0.05 - 0.025) << type;
-  }
-  OmplPlanner bad;
-  EXPECT_THROW(bad.initialize("ompl", maze, {{"algorithm", "Dijkstra"}}), std::invalid_argument);
+// Its keys, read as the host reads them; a value that is not a boolean, an unknown solver and the
+// removed multigrid solver are refused with what is wrong.
+TEST(HarmonicPlanner, ReadsItsKeysAndRefusesBadValuesAndTheRemovedMultigridSolver) {
+  const auto refusal = [](const std::string& yaml) {
+    HarmonicPlanner planner;
+    return wheelchair_planner::configureRefusal(planner, chairSettings(), yaml);
+  };
+  EXPECT_EQ(refusal("{solver: sor, tolerance: 1e-6, max_iterations: 500, omega: 1.5,"
+                    " sweeps_per_rescale: 4, prepare_on_map: false}"),
+            "");
+  EXPECT_NE(refusal("{prepare_on_map: often}").find("prepare_on_map"), std::string::npos);
+  EXPECT_NE(refusal("{solver: multigrid}").find("'multigrid' was removed"), std::string::npos);
+  EXPECT_NE(refusal("{solver: jacobi}").find("'direct' or 'sor'"), std::string::npos);
+  EXPECT_NE(refusal("{omega: 2.0}").find("omega"), std::string::npos);
+  EXPECT_NE(refusal("{algorithm: RRTstar}").find("unknown parameter 'algorithm'"),
+            std::string::npos)
+      << "another plugin's key";
 }

@@ -1,13 +1,19 @@
 // ROS layer of the one-switch interface: /switch events and named places in, goals, stop
 // requests, announcements and rviz markers out. It also tells the rider what became of a
 // goal: refused by the planner (with its reason), reached or aborted by the controller, or
-// stopped by the safety supervisor; each of those ends the drive and restarts scanning.
+// stopped by the safety supervisor (wheelchair_msgs/SafetyStatus); each of those ends the drive
+// and restarts scanning. While the rider chooses, a change of the localizer's verdict
+// (wheelchair_msgs/LocalizationStatus) is told in the localizer's own words.
 // The controller's outcome is read from ~path_status, which names the path it concerns: the end
 // of a path older than the rider's latest command (a goal, a stop) is not this drive's end.
 #include <wheelchair_hmi/places.h>
 #include <wheelchair_hmi/switch_scanner.h>
 #include <wheelchair_msgs/GoToPlace.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_msgs/PlanCertificate.h>
+#include <wheelchair_msgs/SafetyStatus.h>
+#include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/parameters.h>
 
 #include <actionlib_msgs/GoalStatus.h>
 
@@ -23,28 +29,50 @@
 #include <cstdio>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 namespace wheelchair_hmi {
+
+/// Every private parameter of the nodelet: the scanner's options and its own.
+struct HmiNodeletConfig {
+  ScannerOptions scanner;
+  std::string places_file;  ///< required: the named places of the map
+  std::string map_frame = "map";
+  std::string controller_path_status = "controller/path_status";
+  std::string safety_status = "safety/status";
+  std::string localization_status = "localization/status";
+
+  std::string validate() const {
+    const std::string scanner_problem = scanner.validate();
+    wheelchair_core::ConfigChecks checks;
+    checks.check(scanner_problem.empty(), scanner_problem)
+        .check(!map_frame.empty(), "map_frame must not be empty");
+    return checks.result();
+  }
+};
+
+void readHmiNodeletConfig(wheelchair_core::ConfigReader& reader, HmiNodeletConfig& config) {
+  readScannerOptions(reader, config.scanner);
+  reader.require("places_file", config.places_file);
+  reader.read("map_frame", config.map_frame);
+  reader.renamed("frame_id", "map_frame");
+  reader.read("controller_path_status", config.controller_path_status);
+  reader.read("safety_status", config.safety_status);
+  reader.read("localization_status", config.localization_status);
+}
 
 class HmiNodelet : public nodelet::Nodelet {
  private:
   void onInit() override {
-    ros::NodeHandle nh = getNodeHandle(), pnh = getPrivateNodeHandle();
-    std::string places_file;
-    if (!pnh.getParam("places_file", places_file)) {
-      NODELET_FATAL("~places_file is not set: no destinations to offer");
-      return;
-    }
-    ScannerOptions options;
-    pnh.param("scan_interval", options.scan_interval, options.scan_interval);
-    pnh.param("confirm_timeout", options.confirm_timeout, options.confirm_timeout);
-    pnh.param("item_cycles", options.item_cycles, options.item_cycles);
-    pnh.param<std::string>("frame_id", frame_id_, "map");
+    ros::NodeHandle nh = getNodeHandle();
+    const auto config = wheelchair_ros::loadParameters<HmiNodeletConfig>(getPrivateNodeHandle(),
+                                                                         readHmiNodeletConfig);
+    map_frame_ = config.map_frame;
     try {
-      scanner_ = std::make_unique<SwitchScanner>(loadPlaces(places_file), options);
-    } catch (const std::exception& e) {
+      scanner_ = std::make_unique<SwitchScanner>(loadPlaces(config.places_file), config.scanner);
+    } catch (const std::exception& e) {  // no destinations to offer: refuse to start
       NODELET_FATAL("%s", e.what());
-      return;
+      throw wheelchair_core::ConfigError(getPrivateNodeHandle().getNamespace() + ": " + e.what());
     }
     goal_pub_ = nh.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 1);
     stop_pub_ = nh.advertise<std_msgs::Empty>("user_stop", 1);
@@ -54,13 +82,13 @@ class HmiNodelet : public nodelet::Nodelet {
     go_to_sub_ = nh.subscribe("hmi/go_to", 1, &HmiNodelet::onGoTo, this);
     finished_sub_ = nh.subscribe("hmi/finished", 1, &HmiNodelet::onFinished, this);
     go_to_srv_ = nh.advertiseService("go_to_place", &HmiNodelet::onGoToService, this);
-    std::string controller_status, safety_status;
-    pnh.param<std::string>("controller_path_status", controller_status, "controller/path_status");
-    pnh.param<std::string>("safety_status", safety_status, "safety/status");
     outcome_subs_.push_back(nh.subscribe("move_base_simple/goal", 1, &HmiNodelet::onGoal, this));
     outcome_subs_.push_back(nh.subscribe("plan_certificate", 1, &HmiNodelet::onPlan, this));
-    outcome_subs_.push_back(nh.subscribe(controller_status, 5, &HmiNodelet::onController, this));
-    outcome_subs_.push_back(nh.subscribe(safety_status, 5, &HmiNodelet::onSafety, this));
+    outcome_subs_.push_back(
+        nh.subscribe(config.controller_path_status, 5, &HmiNodelet::onController, this));
+    outcome_subs_.push_back(nh.subscribe(config.safety_status, 5, &HmiNodelet::onSafety, this));
+    outcome_subs_.push_back(
+        nh.subscribe(config.localization_status, 5, &HmiNodelet::onLocalization, this));
     timer_ = nh.createTimer(ros::Duration(0.1), &HmiNodelet::onTimer, this);
     std::lock_guard<std::mutex> lock(mutex_);
     handle(scanner_->start(ros::Time::now().toSec()));
@@ -134,13 +162,33 @@ class HmiNodelet : public nodelet::Nodelet {
     }
   }
 
-  /// The supervisor's verdict: "safe" or "<reason>: <detail>".
-  void onSafety(const std_msgs::String::ConstPtr& msg) {
+  /// The supervisor's verdict: a new stop ends the drive, told in the supervisor's words (its
+  /// detail goes to the log); the same stop again is not news.
+  void onSafety(const wheelchair_msgs::SafetyStatus::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (msg->data == "safe") last_safety_.clear();
-    if (msg->data == "safe" || msg->data == last_safety_) return;
-    last_safety_ = msg->data;
-    endDrive("Safety stop: " + msg->data + ". Choose a destination to go on.");
+    if (!msg->stop) {
+      last_safety_.reset();
+      return;
+    }
+    if (last_safety_ && last_safety_->reason == msg->reason && last_safety_->detail == msg->detail)
+      return;
+    last_safety_ = *msg;
+    if (scanner_->phase() == SwitchScanner::Phase::kDriving)
+      NODELET_INFO("[switch] safety stop: %s", msg->detail.c_str());
+    endDrive("Safety stop: " + msg->sentence + ". Choose a destination to go on.");
+  }
+
+  /// The localizer's verdict: while the rider chooses, a change between localized and not is
+  /// told in the localizer's words (a first "localized" is not news). While the chair drives, a
+  /// loss stops it and the safety stop is what the rider hears.
+  void onLocalization(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const bool news = localized_ ? *localized_ != msg->localized : !msg->localized;
+    localized_ = msg->localized;
+    if (!news || scanner_->phase() == SwitchScanner::Phase::kDriving) return;
+    announce(!msg->sentence.empty() ? msg->sentence
+             : msg->localized       ? "The chair knows where it is."
+                                    : "The chair does not know where it is.");
   }
 
   static std::string formatLength(double metres) {
@@ -192,12 +240,9 @@ class HmiNodelet : public nodelet::Nodelet {
 
   void publishGoal(const Place& place) {
     geometry_msgs::PoseStamped goal;
-    goal.header.frame_id = frame_id_;
+    goal.header.frame_id = map_frame_;
     goal.header.stamp = ros::Time::now();
-    goal.pose.position.x = place.x;
-    goal.pose.position.y = place.y;
-    goal.pose.orientation.z = std::sin(0.5 * place.yaw);
-    goal.pose.orientation.w = std::cos(0.5 * place.yaw);
+    goal.pose = wheelchair_ros::toPoseMsg(place.pose);
     goal_pub_.publish(goal);
   }
 
@@ -209,15 +254,15 @@ class HmiNodelet : public nodelet::Nodelet {
       const bool lit = out.place ? out.place == &places[i] : places[i].room == out.group;
       for (int text = 0; text < 2; ++text) {
         visualization_msgs::Marker m;
-        m.header.frame_id = frame_id_;
+        m.header.frame_id = map_frame_;
         m.header.stamp = ros::Time::now();
         m.ns = text ? "place_names" : "places";
         m.id = static_cast<int>(i);
         m.type = text ? visualization_msgs::Marker::TEXT_VIEW_FACING
                       : visualization_msgs::Marker::SPHERE;
         m.text = text ? places[i].name : "";
-        m.pose.position.x = places[i].x;
-        m.pose.position.y = places[i].y;
+        m.pose.position.x = places[i].pose.x;
+        m.pose.position.y = places[i].pose.y;
         m.pose.position.z = text ? 0.5 : 0.1;
         m.pose.orientation.w = 1.0;
         m.scale.x = m.scale.y = m.scale.z = lit ? 0.45 : 0.2;
@@ -233,7 +278,7 @@ class HmiNodelet : public nodelet::Nodelet {
 
   std::mutex mutex_;
   std::unique_ptr<SwitchScanner> scanner_;
-  std::string frame_id_;
+  std::string map_frame_;
   ros::Publisher goal_pub_, stop_pub_, announce_pub_, marker_pub_;
   ros::Subscriber switch_sub_, go_to_sub_, finished_sub_;
   std::vector<ros::Subscriber> outcome_subs_;
@@ -246,7 +291,8 @@ class HmiNodelet : public nodelet::Nodelet {
   /// a little ahead. An old drive's path is older by that drive's duration (seconds).
   static constexpr double kStampTolerance = 0.1;
   wheelchair_msgs::PlanCertificate::ConstPtr certificate_;
-  std::string last_safety_;
+  std::optional<wheelchair_msgs::SafetyStatus> last_safety_;  ///< the stop last told
+  std::optional<bool> localized_;                             ///< the localizer's last verdict
   ros::ServiceServer go_to_srv_;
   ros::Timer timer_;
 };

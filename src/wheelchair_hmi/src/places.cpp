@@ -35,9 +35,9 @@ std::vector<Place> loadPlaces(const std::string& yaml_path) {
       Place place;
       place.name = entry["name"].as<std::string>();
       place.room = entry["room"] ? entry["room"].as<std::string>() : std::string("places");
-      place.x = finiteNumber(entry, "x", where);
-      place.y = finiteNumber(entry, "y", where);
-      place.yaw = entry["yaw"] ? finiteNumber(entry, "yaw", where) : 0.0;
+      place.pose.x = finiteNumber(entry, "x", where);
+      place.pose.y = finiteNumber(entry, "y", where);
+      place.pose.yaw = entry["yaw"] ? finiteNumber(entry, "yaw", where) : 0.0;
       if (!names.insert(place.name).second)
         throw std::runtime_error(where + ": duplicate name '" + place.name + "'");
       places.push_back(place);

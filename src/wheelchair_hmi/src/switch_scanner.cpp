@@ -6,12 +6,26 @@
 
 namespace wheelchair_hmi {
 
+std::string ScannerOptions::validate() const {
+  wheelchair_core::ConfigChecks checks;
+  checks.positive("scan_interval", scan_interval)
+      .positive("confirm_timeout", confirm_timeout)
+      .check(item_cycles >= 1,
+             "item_cycles must be at least 1 (got " + std::to_string(item_cycles) + ")");
+  return checks.result();
+}
+
+void readScannerOptions(wheelchair_core::ConfigReader& reader, ScannerOptions& options) {
+  reader.read("scan_interval", options.scan_interval);
+  reader.read("confirm_timeout", options.confirm_timeout);
+  reader.read("item_cycles", options.item_cycles);
+}
+
 SwitchScanner::SwitchScanner(std::vector<Place> places, ScannerOptions options)
     : places_(std::move(places)), options_(options) {
   if (places_.empty()) throw std::invalid_argument("switch scanner needs at least one place");
-  if (!(options_.scan_interval > 0.0) || !(options_.confirm_timeout > 0.0) ||
-      options_.item_cycles < 1)
-    throw std::invalid_argument("switch scanner: intervals must be positive");
+  const std::string problem = options_.validate();
+  if (!problem.empty()) throw std::invalid_argument("switch scanner: " + problem);
   for (size_t i = 0; i < places_.size(); ++i) {
     const auto it = std::find(group_names_.begin(), group_names_.end(), places_[i].room);
     if (it == group_names_.end()) {

@@ -1,11 +1,16 @@
-// The one-switch node driven by scripted switch events, as an adapter would publish them.
+// The one-switch node driven by scripted switch events, as an adapter would publish them, and
+// what it tells the rider of the supervisor's and the localizer's typed statuses.
 #include <wheelchair_msgs/GoToPlace.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
+#include <wheelchair_msgs/SafetyStatus.h>
 
 #include <geometry_msgs/PoseStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <std_msgs/Empty.h>
 #include <std_msgs/String.h>
+
+#include <algorithm>
 
 #include "wait_for.h"
 
@@ -49,6 +54,61 @@ TEST(HmiNode, UnknownPlaceIsRefusedWithAMessage) {
   srv.request.name = "bed";
   ASSERT_TRUE(ros::service::call("go_to_place", srv));
   EXPECT_TRUE(srv.response.accepted);
+}
+
+TEST(HmiNode, ASafetyStopWhileDrivingIsToldInTheSupervisorsWords) {
+  ros::NodeHandle nh;
+  std::vector<std::string> announced;  // every one: the next highlight follows the stop at once
+  auto text_sub = nh.subscribe<std_msgs::String>(
+      "hmi/announce", 10,
+      [&](const std_msgs::String::ConstPtr& m) { announced.push_back(m->data); });
+  const auto told = [&](const std::string& text) {
+    return std::find(announced.begin(), announced.end(), text) != announced.end();
+  };
+  ros::Publisher safety = nh.advertise<wheelchair_msgs::SafetyStatus>("safety/status", 1);
+  ASSERT_TRUE(waitFor([&] { return safety.getNumSubscribers() > 0; }));
+  wheelchair_msgs::GoToPlace srv;
+  srv.request.name = "sink";
+  ASSERT_TRUE(ros::service::call("go_to_place", srv));  // the chair drives
+  ASSERT_TRUE(waitFor([&] { return told("Going to sink."); }));
+  wheelchair_msgs::SafetyStatus status;
+  status.header.stamp = ros::Time::now();
+  status.stop = true;
+  status.reason = wheelchair_msgs::SafetyStatus::OBSTACLE;
+  status.sentence = "something is in the way";
+  status.detail = "5 laser returns on the path ahead";
+  safety.publish(status);
+  EXPECT_TRUE(waitFor([&] {
+    return told("Safety stop: something is in the way. Choose a destination to go on.");
+  }));
+}
+
+TEST(HmiNode, ALostPositionIsToldWhileTheRiderChooses) {
+  ros::NodeHandle nh;
+  std::vector<std::string> announced;
+  auto text_sub = nh.subscribe<std_msgs::String>(
+      "hmi/announce", 10,
+      [&](const std_msgs::String::ConstPtr& m) { announced.push_back(m->data); });
+  ros::Publisher localization =
+      nh.advertise<wheelchair_msgs::LocalizationStatus>("localization/status", 5);
+  ASSERT_TRUE(waitFor([&] { return localization.getNumSubscribers() > 0; }));
+  const auto told = [&](const std::string& text) {
+    return std::find(announced.begin(), announced.end(), text) != announced.end();
+  };
+  wheelchair_msgs::LocalizationStatus status;
+  status.state = wheelchair_msgs::LocalizationStatus::MISFIT;
+  status.localized = false;
+  status.sentence = "The chair does not know where it is.";
+  localization.publish(status);
+  EXPECT_TRUE(waitFor([&] { return told(status.sentence); }));
+  localization.publish(status);  // the same verdict again is not news
+  status.state = wheelchair_msgs::LocalizationStatus::LOCALIZED;
+  status.localized = true;
+  status.sentence = "The chair knows where it is.";
+  localization.publish(status);
+  EXPECT_TRUE(waitFor([&] { return told(status.sentence); }));
+  EXPECT_EQ(std::count(announced.begin(), announced.end(), "The chair does not know where it is."),
+            1);
 }
 
 int main(int argc, char** argv) {

@@ -3,6 +3,7 @@
 #include <wheelchair_hmi/switch_scanner.h>
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cstdio>
 #include <fstream>
@@ -20,7 +21,7 @@ std::vector<Place> homePlaces() {
   std::vector<Place> places;
   for (const auto& [room, count] : rooms)
     for (int i = 0; i < count; ++i)
-      places.push_back({room + "_" + std::to_string(i), room, 1.0 * i, 2.0, 0.0});
+      places.push_back({room + "_" + std::to_string(i), room, {1.0 * i, 2.0, 0.0}});
   return places;
 }
 
@@ -123,8 +124,8 @@ TEST(Places, LoadsAndRejectsBadFiles) {
   const auto places = loadPlaces(path);
   ASSERT_EQ(places.size(), 2u);
   EXPECT_EQ(places[0].room, "bedroom");
-  EXPECT_DOUBLE_EQ(places[0].yaw, 1.57);
-  EXPECT_DOUBLE_EQ(places[1].yaw, 0.0);
+  EXPECT_DOUBLE_EQ(places[0].pose.yaw, 1.57);
+  EXPECT_DOUBLE_EQ(places[1].pose.yaw, 0.0);
   ASSERT_NE(findPlace(places, "sink"), nullptr);
   EXPECT_EQ(findPlace(places, "garage"), nullptr);
 
@@ -145,4 +146,25 @@ TEST(Places, LoadsAndRejectsBadFiles) {
   expectError("places: [\n", "bad YAML");
   std::remove(path.c_str());
   EXPECT_THROW(loadPlaces(path), std::runtime_error);
+}
+
+TEST(ScannerOptions, KeysAreReadAndUnusableOnesRefused) {
+  using wheelchair_core::ConfigError;
+  using wheelchair_core::loadConfig;
+  using wheelchair_core::YamlParameterSource;
+  const auto load = [](const std::string& text) {
+    return loadConfig<ScannerOptions>(YamlParameterSource(YAML::Load(text), "hmi.yaml"),
+                                      readScannerOptions);
+  };
+  const ScannerOptions o = load("{scan_interval: 1.0, confirm_timeout: 5, item_cycles: 3}");
+  EXPECT_DOUBLE_EQ(o.scan_interval, 1.0);
+  EXPECT_DOUBLE_EQ(o.confirm_timeout, 5.0);
+  EXPECT_EQ(o.item_cycles, 3);
+  EXPECT_EQ(ScannerOptions().validate(), "");
+  EXPECT_THROW(load("{scan_interval: 0.0}"), ConfigError);
+  EXPECT_THROW(load("{item_cycles: 0}"), ConfigError);
+  EXPECT_THROW(load("{scan_intervall: 1.0}"), ConfigError);  // misspelt: refused, not ignored
+  ScannerOptions bad;
+  bad.confirm_timeout = -1.0;
+  EXPECT_THROW(SwitchScanner(homePlaces(), bad), std::invalid_argument);
 }

@@ -18,6 +18,7 @@
 #include <wheelchair_kld/kld_localizer.h>
 #include <wheelchair_kld/ros/conversions.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/shared_tf.h>
 #include <Eigen/Dense>
@@ -92,6 +93,9 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     cloud_pub_ = nh.advertise<geometry_msgs::PoseArray>("particlecloud", 2, true);
     count_pub_ = nh.advertise<std_msgs::Int32>("kld/particle_count", 5);
     status_pub_ = nh.advertise<std_msgs::String>("kld/localized", 5, true);
+    // Stand-in (helper H4) until the localizer's own typed status (helper H3) lands.
+    typed_status_pub_ =
+        nh.advertise<wheelchair_msgs::LocalizationStatus>("localization/status", 5, true);
     map_sub_ = nh.subscribe("map", 1, &KldLocalizerNodelet::onMap, this);
     // Like amcl: a scan waits (in a bounded queue, without blocking a thread) until odom ->
     // base_link is known at its stamp; odometry may lag the laser by a few tens of ms.
@@ -299,6 +303,19 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
       last_status_ = s.data;
     }
     status_pub_.publish(s);
+    wheelchair_msgs::LocalizationStatus typed;
+    typed.header.stamp = ros::Time::now();
+    typed.localized = why_not.empty();
+    typed.state = typed.localized ? wheelchair_msgs::LocalizationStatus::LOCALIZED
+                  : localizer_ && localizer_->initialized()
+                      ? wheelchair_msgs::LocalizationStatus::MISFIT
+                      : wheelchair_msgs::LocalizationStatus::UNINITIALIZED;
+    typed.sentence =
+        typed.localized ? "The chair knows where it is." : "The chair does not know where it is.";
+    typed.detail = why_not;
+    typed.position_std = typed.heading_std = typed.inlier_fraction = typed.mean_fit = NAN;
+    typed.best_weight = NAN;
+    typed_status_pub_.publish(typed);
   }
 
   KldParams params_;
@@ -317,7 +334,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   std::map<std::string, ros::WallTime> last_warning_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
-  ros::Publisher pose_pub_, cloud_pub_, count_pub_, status_pub_;
+  ros::Publisher pose_pub_, cloud_pub_, count_pub_, status_pub_, typed_status_pub_;
   message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> scan_filter_;
   ros::Subscriber map_sub_, init_sub_;

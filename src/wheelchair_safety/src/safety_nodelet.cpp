@@ -1,7 +1,11 @@
 // ROS layer of the safety supervisor: feeds it the localizer's estimate and status, tf
 // map -> base_link, the laser (returns projected into the map), the map, the plan, the base
-// driver's status and the rider's commands; publishes a latched stop flag and its reason.
+// driver's status and the rider's commands; publishes a latched stop flag and the typed status
+// (wheelchair_msgs/SafetyStatus) whenever the verdict changes.
+#include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/parameters.h>
+#include <wheelchair_ros/shared_tf.h>
 #include <wheelchair_safety/safety_supervisor.h>
 
 #include <diagnostic_msgs/DiagnosticStatus.h>
@@ -14,51 +18,63 @@
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/Empty.h>
-#include <std_msgs/String.h>
-#include <tf2/utils.h>
 #include <tf2_ros/buffer.h>
-#include <wheelchair_ros/shared_tf.h>
 #include <pluginlib/class_list_macros.hpp>
 
-#include <cmath>
 #include <memory>
 #include <mutex>
 
+#include "safety_status_msg.h"
+
 namespace wheelchair_safety {
+
+/// Every private parameter of the nodelet: the supervisor's limits and its own.
+struct SafetyNodeletConfig {
+  SafetyLimits limits;
+  double rate = 20.0;  ///< [Hz] checks per second (and at once on a new goal)
+  std::string map_frame = "map";
+  std::string base_frame = "base_link";
+
+  std::string validate() const {
+    const std::string limits_problem = limits.validate();
+    wheelchair_core::ConfigChecks checks;
+    checks.check(limits_problem.empty(), limits_problem)
+        .positive("rate", rate)
+        .check(!map_frame.empty(), "map_frame must not be empty")
+        .check(!base_frame.empty(), "base_frame must not be empty");
+    return checks.result();
+  }
+};
+
+void readSafetyNodeletConfig(wheelchair_core::ConfigReader& reader, SafetyNodeletConfig& config) {
+  readSafetyLimits(reader, config.limits);
+  reader.read("rate", config.rate);
+  reader.read("map_frame", config.map_frame);
+  reader.read("base_frame", config.base_frame);
+}
 
 class SafetyNodelet : public nodelet::Nodelet {
  private:
   void onInit() override {
-    ros::NodeHandle nh = getNodeHandle(), pnh = getPrivateNodeHandle();
-    SafetyLimits limits;
-    pnh.param("scan_timeout", limits.scan_timeout, limits.scan_timeout);
-    pnh.param("pose_timeout", limits.pose_timeout, limits.pose_timeout);
-    pnh.param("localization_timeout", limits.localization_timeout, limits.localization_timeout);
-    pnh.param("max_position_std", limits.max_position_std, limits.max_position_std);
-    pnh.param("max_heading_std", limits.max_heading_std, limits.max_heading_std);
-    pnh.param("stop_distance", limits.stop_distance, limits.stop_distance);
-    pnh.param("corridor_half_width", limits.corridor_half_width, limits.corridor_half_width);
-    pnh.param("map_tolerance", limits.map_tolerance, limits.map_tolerance);
-    pnh.param("min_obstacle_returns", limits.min_obstacle_returns, limits.min_obstacle_returns);
-    pnh.param("driver_fault_grace", limits.driver_fault_grace, limits.driver_fault_grace);
-    pnh.param<std::string>("map_frame", map_frame_, "map");
-    pnh.param<std::string>("base_frame", base_frame_, "base_link");
-    supervisor_ = std::make_unique<SafetySupervisor>(limits);
+    ros::NodeHandle nh = getNodeHandle();
+    const auto config = wheelchair_ros::loadParameters<SafetyNodeletConfig>(
+        getPrivateNodeHandle(), readSafetyNodeletConfig);
+    map_frame_ = config.map_frame;
+    base_frame_ = config.base_frame;
+    supervisor_ = std::make_unique<SafetySupervisor>(config.limits);
     tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
 
     stop_pub_ = nh.advertise<std_msgs::Bool>("safety/stop", 1, true);
-    status_pub_ = nh.advertise<std_msgs::String>("safety/status", 1, true);
+    status_pub_ = nh.advertise<wheelchair_msgs::SafetyStatus>("safety/status", 1, true);
     subs_.push_back(nh.subscribe("map", 1, &SafetyNodelet::onMap, this));
     subs_.push_back(nh.subscribe("plan", 1, &SafetyNodelet::onPlan, this));
     subs_.push_back(nh.subscribe("scan", 5, &SafetyNodelet::onScan, this));
     subs_.push_back(nh.subscribe("kld_pose", 5, &SafetyNodelet::onEstimate, this));
-    subs_.push_back(nh.subscribe("kld/localized", 5, &SafetyNodelet::onLocalized, this));
+    subs_.push_back(nh.subscribe("localization/status", 5, &SafetyNodelet::onLocalization, this));
     subs_.push_back(nh.subscribe("base_driver/status", 5, &SafetyNodelet::onDriver, this));
     subs_.push_back(nh.subscribe("user_stop", 5, &SafetyNodelet::onUserStop, this));
     subs_.push_back(nh.subscribe("move_base_simple/goal", 5, &SafetyNodelet::onGoal, this));
-    double rate = 20.0;
-    pnh.param("rate", rate, rate);
-    timer_ = nh.createTimer(ros::Duration(1.0 / rate), &SafetyNodelet::onTimer, this);
+    timer_ = nh.createTimer(ros::Duration(1.0 / config.rate), &SafetyNodelet::onTimer, this);
   }
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
@@ -67,29 +83,25 @@ class SafetyNodelet : public nodelet::Nodelet {
   }
 
   void onPlan(const nav_msgs::Path::ConstPtr& msg) {
-    std::vector<Eigen::Vector2d> path;
-    for (const auto& pose : msg->poses)
-      path.emplace_back(pose.pose.position.x, pose.pose.position.y);
+    const auto path = wheelchair_ros::fromPathMsg(*msg);
     std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onPath(std::move(path));
+    supervisor_->onPath(path);
   }
 
   void onEstimate(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
-    const auto& c = msg->pose.covariance;  // row-major 6x6: x y z roll pitch yaw
-    Eigen::Matrix3d cov;
-    cov << c[0], c[1], c[5], c[6], c[7], c[11], c[30], c[31], c[35];
+    const Eigen::Matrix3d cov = wheelchair_ros::planarCovariance(msg->pose.covariance);
     std::lock_guard<std::mutex> lock(mutex_);
     covariance_ = cov;
     if (have_status_)  // until the localizer has said whether it is localized: no data yet
       supervisor_->onLocalization(msg->header.stamp.toSec(), localized_, cov, why_not_);
   }
 
-  /// The localizer's verdict: data "localized" or the reason it is not.
-  void onLocalized(const std_msgs::String::ConstPtr& msg) {
+  /// The localizer's verdict: `localized`, and its technical reason when it is not.
+  void onLocalization(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     have_status_ = true;
-    localized_ = msg->data == "localized";
-    why_not_ = msg->data;
+    localized_ = msg->localized;
+    why_not_ = msg->detail.empty() ? msg->sentence : msg->detail;
     supervisor_->onLocalization(ros::Time::now().toSec(), localized_, covariance_, why_not_);
   }
 
@@ -103,16 +115,11 @@ class SafetyNodelet : public nodelet::Nodelet {
                             msg->header.frame_id.c_str(), e.what());
       return;  // the scan watchdog then runs out and stops the chair
     }
-    const double yaw = tf2::getYaw(laser_in_map.transform.rotation);
-    const Eigen::Vector2d origin(laser_in_map.transform.translation.x,
-                                 laser_in_map.transform.translation.y);
-    std::vector<Eigen::Vector2d> returns;
-    for (size_t i = 0; i < msg->ranges.size(); ++i) {
-      const double r = msg->ranges[i];
-      if (!std::isfinite(r) || r < msg->range_min || r > msg->range_max) continue;
-      const double a = yaw + msg->angle_min + i * msg->angle_increment;
-      returns.push_back(origin + r * Eigen::Vector2d(std::cos(a), std::sin(a)));
-    }
+    wheelchair_core::LaserScan2D scan = wheelchair_ros::fromLaserScanMsg(*msg);
+    wheelchair_core::Pose2D laser_pose;
+    if (wheelchair_ros::laserPose2D(laser_in_map.transform, laser_pose))
+      wheelchair_core::mirrorScanAngles(scan);  // mounted upside down
+    const auto returns = wheelchair_core::scanEndpoints(scan, laser_pose);
     std::lock_guard<std::mutex> lock(mutex_);
     supervisor_->onScan(msg->header.stamp.toSec(), returns);
   }
@@ -152,23 +159,18 @@ class SafetyNodelet : public nodelet::Nodelet {
     std::lock_guard<std::mutex> lock(mutex_);
     if (have_pose)
       supervisor_->onPose(base_in_map.header.stamp.toSec(),
-                          {base_in_map.transform.translation.x, base_in_map.transform.translation.y,
-                           tf2::getYaw(base_in_map.transform.rotation)});
-    const SafetyVerdict verdict = supervisor_->check(ros::Time::now().toSec());
-    const std::string text =
-        verdict.stop ? std::string(describe(verdict.reason)) + ": " + verdict.detail : "safe";
-    if (first_ || verdict.stop != stopped_ || text != text_) {
-      if (verdict.stop) NODELET_WARN("STOP: %s", text.c_str());
-      std_msgs::Bool stop;
-      stop.data = verdict.stop;
-      stop_pub_.publish(stop);
-      std_msgs::String status;
-      status.data = text;
-      status_pub_.publish(status);
-      first_ = false;
-      stopped_ = verdict.stop;
-      text_ = text;
-    }
+                          wheelchair_ros::toPose2D(base_in_map.transform));
+    const ros::Time now = ros::Time::now();
+    const wheelchair_msgs::SafetyStatus status =
+        toSafetyStatus(supervisor_->check(now.toSec()), now);
+    if (published_ && sameVerdict(status, last_)) return;
+    if (status.stop) NODELET_WARN("STOP: %s: %s", status.sentence.c_str(), status.detail.c_str());
+    std_msgs::Bool stop;
+    stop.data = status.stop;
+    stop_pub_.publish(stop);
+    status_pub_.publish(status);
+    published_ = true;
+    last_ = status;
   }
 
   std::mutex mutex_;
@@ -181,8 +183,8 @@ class SafetyNodelet : public nodelet::Nodelet {
   ros::Publisher stop_pub_, status_pub_;
   std::vector<ros::Subscriber> subs_;
   ros::Timer timer_;
-  bool first_ = true, stopped_ = false;
-  std::string text_;
+  bool published_ = false;
+  wheelchair_msgs::SafetyStatus last_;
 };
 
 }  // namespace wheelchair_safety

@@ -1,3 +1,4 @@
+#include <wheelchair_core/polygon.h>
 #include <wheelchair_safety/safety_supervisor.h>
 
 #include <Eigen/Eigenvalues>
@@ -9,22 +10,15 @@
 namespace wheelchair_safety {
 namespace {
 
-SafetyVerdict stopFor(StopReason reason, std::string detail) { return {true, reason, detail}; }
+SafetyVerdict stopFor(StopReason reason, std::string detail, double value = NAN,
+                      double limit = NAN) {
+  return {true, reason, std::move(detail), value, limit};
+}
 
 std::string seconds(const char* what, double age) {
   char text[96];
   std::snprintf(text, sizeof(text), "%s for %.2f s", what, age);
   return text;
-}
-
-/// Distance from p to segment [a, b] and the distance along the segment to the foot point.
-double segmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                       double& along) {
-  const Eigen::Vector2d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  along = t * std::sqrt(len2);
-  return (a + t * ab - p).norm();
 }
 
 }  // namespace
@@ -57,7 +51,10 @@ SafetySupervisor::SafetySupervisor(SafetyLimits limits) : limits_(limits) {}
 
 void SafetySupervisor::onMap(const wheelchair_core::OccupancyMap& map) { map_ = map; }
 
-void SafetySupervisor::onPath(std::vector<Eigen::Vector2d> path) { path_ = std::move(path); }
+void SafetySupervisor::onPath(const std::vector<wheelchair_core::Pose2D>& path) {
+  path_.clear();
+  for (const auto& pose : path) path_.push_back(pose.position());
+}
 
 void SafetySupervisor::onLocalization(double stamp, bool localized,
                                       const Eigen::Matrix3d& covariance,
@@ -68,8 +65,8 @@ void SafetySupervisor::onLocalization(double stamp, bool localized,
   if (covariance.allFinite()) covariance_ = covariance;
 }
 
-void SafetySupervisor::onPose(double stamp, const Eigen::Vector3d& pose) {
-  if (!pose.allFinite()) return;  // a non-finite pose never refreshes the watchdog
+void SafetySupervisor::onPose(double stamp, const wheelchair_core::Pose2D& pose) {
+  if (!pose.isFinite()) return;  // a non-finite pose never refreshes the watchdog
   pose_stamp_ = stamp;
   pose_ = pose;
 }
@@ -111,7 +108,7 @@ bool SafetySupervisor::knownObstacleNear(const Eigen::Vector2d& point) const {
 
 bool SafetySupervisor::inCorridorAhead(const Eigen::Vector2d& point) const {
   // Start from the path vertex nearest to the chair, then walk stop_distance forward.
-  const Eigen::Vector2d here = pose_.head<2>();
+  const Eigen::Vector2d here = pose_.position();
   size_t start = 0;
   double best = INFINITY;
   for (size_t i = 0; i < path_.size(); ++i) {
@@ -127,7 +124,8 @@ bool SafetySupervisor::inCorridorAhead(const Eigen::Vector2d& point) const {
   double walked = 0.0;
   for (size_t i = 0; i + 1 < ahead.size(); ++i) {
     double along = 0.0;
-    const double dist = segmentDistance(point, ahead[i], ahead[i + 1], along);
+    const double dist =
+        wheelchair_core::pointSegmentDistance(point, ahead[i], ahead[i + 1], &along);
     if (dist <= limits_.corridor_half_width && walked + along <= limits_.stop_distance) return true;
     walked += (ahead[i + 1] - ahead[i]).norm();
   }
@@ -137,18 +135,22 @@ bool SafetySupervisor::inCorridorAhead(const Eigen::Vector2d& point) const {
 SafetyVerdict SafetySupervisor::evaluate(double now) const {
   if (user_stop_) return stopFor(StopReason::kUserStop, "switch pressed while driving");
   if (driver_fault_ && now - driver_fault_since_ >= limits_.driver_fault_grace)
-    return stopFor(StopReason::kDriverFault, driver_detail_);
+    return stopFor(StopReason::kDriverFault, driver_detail_, now - driver_fault_since_,
+                   limits_.driver_fault_grace);
   if (scan_stamp_ < 0.0 || pose_stamp_ < 0.0 || localization_stamp_ < 0.0)
     return stopFor(StopReason::kNoData, scan_stamp_ < 0.0   ? "no laser scan yet"
                                         : pose_stamp_ < 0.0 ? "no pose yet"
                                                             : "no localization status yet");
   if (now - scan_stamp_ > limits_.scan_timeout)
-    return stopFor(StopReason::kLaserSilent, seconds("no laser scan", now - scan_stamp_));
+    return stopFor(StopReason::kLaserSilent, seconds("no laser scan", now - scan_stamp_),
+                   now - scan_stamp_, limits_.scan_timeout);
   if (now - pose_stamp_ > limits_.pose_timeout)
-    return stopFor(StopReason::kPoseStale, seconds("no pose update", now - pose_stamp_));
+    return stopFor(StopReason::kPoseStale, seconds("no pose update", now - pose_stamp_),
+                   now - pose_stamp_, limits_.pose_timeout);
   if (now - localization_stamp_ > limits_.localization_timeout)
     return stopFor(StopReason::kLocalizationLost,
-                   seconds("no localization status", now - localization_stamp_));
+                   seconds("no localization status", now - localization_stamp_),
+                   now - localization_stamp_, limits_.localization_timeout);
   if (!localized_) return stopFor(StopReason::kLocalizationLost, why_not_localized_);
   const double xy_std =
       std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(covariance_.topLeftCorner<2, 2>())
@@ -159,11 +161,14 @@ SafetyVerdict SafetySupervisor::evaluate(double now) const {
     char text[96];
     std::snprintf(text, sizeof(text), "position std %.2f m, heading std %.2f rad", xy_std,
                   heading_std);
-    return stopFor(StopReason::kCovarianceTooLarge, text);
+    const bool position = xy_std > limits_.max_position_std;
+    return stopFor(StopReason::kCovarianceTooLarge, text, position ? xy_std : heading_std,
+                   position ? limits_.max_position_std : limits_.max_heading_std);
   }
   if (unexpected_returns_ >= limits_.min_obstacle_returns)
     return stopFor(StopReason::kUnexpectedObstacle,
-                   std::to_string(unexpected_returns_) + " laser returns on the path ahead");
+                   std::to_string(unexpected_returns_) + " laser returns on the path ahead",
+                   unexpected_returns_, limits_.min_obstacle_returns);
   return {};
 }
 

@@ -8,8 +8,9 @@
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
-#include <std_msgs/String.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
+#include <wheelchair_msgs/SafetyStatus.h>
 
 #include <cmath>
 
@@ -22,12 +23,13 @@ class World {
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
     plan_pub_ = nh_.advertise<nav_msgs::Path>("plan", 1, true);
     pose_pub_ = nh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("kld_pose", 1);
-    localized_pub_ = nh_.advertise<std_msgs::String>("kld/localized", 1);
+    localized_pub_ = nh_.advertise<wheelchair_msgs::LocalizationStatus>("localization/status", 1);
     scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 1);
     stop_sub_ = nh_.subscribe<std_msgs::Bool>(
         "safety/stop", 5, [this](const std_msgs::Bool::ConstPtr& m) { stop_ = m->data; });
-    status_sub_ = nh_.subscribe<std_msgs::String>(
-        "safety/status", 5, [this](const std_msgs::String::ConstPtr& m) { status_ = m->data; });
+    status_sub_ = nh_.subscribe<wheelchair_msgs::SafetyStatus>(
+        "safety/status", 5,
+        [this](const wheelchair_msgs::SafetyStatus::ConstPtr& m) { status_ = *m; });
     nav_msgs::OccupancyGrid map;
     map.header.frame_id = "map";
     map.info.resolution = 0.05;
@@ -69,8 +71,10 @@ class World {
     pose.header.frame_id = "map";
     pose.pose.covariance[0] = pose.pose.covariance[7] = pose.pose.covariance[35] = 1e-3;
     pose_pub_.publish(pose);
-    std_msgs::String localized;
-    localized.data = "localized";
+    wheelchair_msgs::LocalizationStatus localized;
+    localized.header.stamp = now;
+    localized.state = wheelchair_msgs::LocalizationStatus::LOCALIZED;
+    localized.localized = true;
     localized_pub_.publish(localized);
     if (!scan) return;
     sensor_msgs::LaserScan s;
@@ -101,7 +105,7 @@ class World {
 
   int stop_ = -1;
   bool ready_ = false;
-  std::string status_;
+  wheelchair_msgs::SafetyStatus status_;
 
  private:
   ros::NodeHandle nh_;
@@ -117,16 +121,21 @@ TEST(SafetyNode, ScenarioStopsWithItsReason) {
   ros::param::param<std::string>("~scenario", scenario, "person");
   World world;
   ASSERT_TRUE(world.runUntil(15.0, true, false, false)) << "healthy data: " << world.status_;
-  EXPECT_EQ(world.status_, "safe");
+  EXPECT_EQ(world.status_.reason, wheelchair_msgs::SafetyStatus::NONE) << world.status_;
+  EXPECT_FALSE(world.status_.stop);
   if (scenario == "person") {
     ASSERT_TRUE(world.runUntil(5.0, true, true, true));
-    EXPECT_NE(world.status_.find("in the way"), std::string::npos) << world.status_;
+    EXPECT_EQ(world.status_.reason, wheelchair_msgs::SafetyStatus::OBSTACLE) << world.status_;
+    EXPECT_NE(world.status_.sentence.find("in the way"), std::string::npos) << world.status_;
     ASSERT_FALSE(world.runUntil(1.0, true, false, false)) << "resumed without a command";
   } else {
     const ros::WallTime silent = ros::WallTime::now();
     ASSERT_TRUE(world.runUntil(5.0, false, false, true));
     EXPECT_LT((ros::WallTime::now() - silent).toSec(), 0.3 + 0.35);  // timeout + 2 cycles
-    EXPECT_NE(world.status_.find("laser scanner is silent"), std::string::npos) << world.status_;
+    EXPECT_EQ(world.status_.reason, wheelchair_msgs::SafetyStatus::LASER_SILENT) << world.status_;
+    EXPECT_NE(world.status_.sentence.find("laser scanner is silent"), std::string::npos)
+        << world.status_;
+    EXPECT_GT(world.status_.value, world.status_.limit) << world.status_;  // age > scan_timeout
   }
 }
 

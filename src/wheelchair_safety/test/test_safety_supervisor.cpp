@@ -5,6 +5,7 @@
 
 using namespace wheelchair_safety;
 using wheelchair_core::OccupancyMap;
+using wheelchair_core::Pose2D;
 
 namespace {
 
@@ -18,9 +19,9 @@ OccupancyMap corridorMap() {
   return map;
 }
 
-std::vector<Eigen::Vector2d> straightPath() {
-  std::vector<Eigen::Vector2d> path;
-  for (double x = 1.0; x <= 8.5; x += 0.05) path.emplace_back(x, 2.0);
+std::vector<Pose2D> straightPath() {
+  std::vector<Pose2D> path;
+  for (double x = 1.0; x <= 8.5; x += 0.05) path.push_back({x, 2.0, 0.0});
   return path;
 }
 
@@ -38,7 +39,7 @@ SafetySupervisor healthy(double t = 10.0) {
   s.onMap(corridorMap());
   s.onPath(straightPath());
   s.onLocalization(t, true, Eigen::Matrix3d::Identity() * 1e-3, "");
-  s.onPose(t, Eigen::Vector3d(2.0, 2.0, 0.0));
+  s.onPose(t, Pose2D{2.0, 2.0, 0.0});
   s.onScan(t, {});
   return s;
 }
@@ -54,25 +55,27 @@ TEST(SafetySupervisor, NoDataYetStopsUntilTheDataArrives) {
   SafetySupervisor s;
   EXPECT_EQ(s.check(0.0).reason, StopReason::kNoData);
   s.onLocalization(0.1, true, Eigen::Matrix3d::Identity() * 1e-3, "");
-  s.onPose(0.1, Eigen::Vector3d(2.0, 2.0, 0.0));
+  s.onPose(0.1, Pose2D{2.0, 2.0, 0.0});
   s.onScan(0.1, {});
   EXPECT_FALSE(s.check(0.2).stop) << s.check(0.2).detail;
 }
 
 TEST(SafetySupervisor, LaserSilentFor300msStops) {
   SafetySupervisor s = healthy();
-  s.onPose(10.29, Eigen::Vector3d(2.0, 2.0, 0.0));
+  s.onPose(10.29, Pose2D{2.0, 2.0, 0.0});
   s.onLocalization(10.29, true, Eigen::Matrix3d::Identity() * 1e-3, "");
   EXPECT_FALSE(s.check(10.29).stop);
   const SafetyVerdict v = s.check(10.31);
   EXPECT_EQ(v.reason, StopReason::kLaserSilent);
   EXPECT_NE(v.detail.find("0.31 s"), std::string::npos) << v.detail;
+  EXPECT_NEAR(v.value, 0.31, 1e-9);  // the numbers behind the verdict: the age and its limit
+  EXPECT_DOUBLE_EQ(v.limit, SafetyLimits().scan_timeout);
 }
 
 TEST(SafetySupervisor, StalePoseStops) {
   SafetySupervisor s = healthy();
   s.onScan(10.35, {});
-  s.onPose(10.35, Eigen::Vector3d(NAN, 2.0, 0.0));  // non-finite: not a refresh
+  s.onPose(10.35, Pose2D{NAN, 2.0, 0.0});  // non-finite: not a refresh
   EXPECT_EQ(s.check(10.35).reason, StopReason::kPoseStale);
 }
 
@@ -89,7 +92,10 @@ TEST(SafetySupervisor, GrowingCovarianceStops) {
   Eigen::Matrix3d cov = Eigen::Matrix3d::Identity() * 1e-3;
   cov(1, 1) = 0.21 * 0.21;
   s.onLocalization(10.05, true, cov, "");
-  EXPECT_EQ(s.check(10.1).reason, StopReason::kCovarianceTooLarge);
+  const SafetyVerdict v = s.check(10.1);
+  EXPECT_EQ(v.reason, StopReason::kCovarianceTooLarge);
+  EXPECT_NEAR(v.value, 0.21, 1e-9);  // the position std-dev against max_position_std
+  EXPECT_DOUBLE_EQ(v.limit, SafetyLimits().max_position_std);
 }
 
 TEST(SafetySupervisor, DriverFaultThatPersistsStops) {
@@ -98,7 +104,7 @@ TEST(SafetySupervisor, DriverFaultThatPersistsStops) {
   s.onDriverStatus(10.0, true, "motor controller heartbeat lost");
   EXPECT_FALSE(s.check(10.0 + 0.5 * grace).stop);  // the driver brakes by itself meanwhile
   s.onScan(10.0 + grace, {});
-  s.onPose(10.0 + grace, Eigen::Vector3d(2.0, 2.0, 0.0));
+  s.onPose(10.0 + grace, Pose2D{2.0, 2.0, 0.0});
   const SafetyVerdict v = s.check(10.0 + grace + 0.01);
   EXPECT_EQ(v.reason, StopReason::kDriverFault);
   EXPECT_EQ(v.detail, "motor controller heartbeat lost");
@@ -111,14 +117,17 @@ TEST(SafetySupervisor, DriverFaultThatClearsWithinTheGraceDoesNotStop) {
   s.onDriverStatus(10.0 + 0.2 * grace, false, "driving");
   s.onDriverStatus(10.0 + 0.6 * grace, true, "command_timeout");  // the grace restarts
   s.onScan(10.0 + grace, {});
-  s.onPose(10.0 + grace, Eigen::Vector3d(2.0, 2.0, 0.0));
+  s.onPose(10.0 + grace, Pose2D{2.0, 2.0, 0.0});
   EXPECT_FALSE(s.check(10.0 + grace + 0.01).stop) << s.check(10.0 + grace + 0.01).detail;
 }
 
 TEST(SafetySupervisor, PersonSteppingOntoThePathAheadStops) {
   SafetySupervisor s = healthy();
   s.onScan(10.05, personAt(2.9, 2.1));  // 0.9 m ahead, on the path
-  EXPECT_EQ(s.check(10.1).reason, StopReason::kUnexpectedObstacle);
+  const SafetyVerdict v = s.check(10.1);
+  EXPECT_EQ(v.reason, StopReason::kUnexpectedObstacle);
+  EXPECT_GE(v.value, v.limit);  // returns counted against min_obstacle_returns
+  EXPECT_DOUBLE_EQ(v.limit, SafetyLimits().min_obstacle_returns);
 }
 
 TEST(SafetySupervisor, ThingsBesideOrFarAheadOrInTheMapDoNotStop) {
@@ -129,7 +138,7 @@ TEST(SafetySupervisor, ThingsBesideOrFarAheadOrInTheMapDoNotStop) {
   EXPECT_FALSE(s.check(10.15).stop);
   s.onScan(10.15, {Eigen::Vector2d(2.8, 2.0), Eigen::Vector2d(2.9, 2.0)});  // two stray returns
   EXPECT_FALSE(s.check(10.2).stop);
-  s.onPose(10.2, Eigen::Vector3d(8.2, 2.0, 0.0));  // near the end, the mapped wall ahead
+  s.onPose(10.2, Pose2D{8.2, 2.0, 0.0});  // near the end, the mapped wall ahead
   s.onLocalization(10.2, true, Eigen::Matrix3d::Identity() * 1e-3, "");
   s.onScan(10.2, personAt(9.0, 2.0));
   EXPECT_FALSE(s.check(10.25).stop) << s.check(10.25).detail;
@@ -140,7 +149,7 @@ TEST(SafetySupervisor, StopLatchesUntilTheRiderCommandsAgain) {
   s.onScan(10.05, personAt(2.9, 2.0));
   ASSERT_TRUE(s.check(10.1).stop);
   s.onScan(10.2, {});  // the person has gone: still stopped
-  s.onPose(10.2, Eigen::Vector3d(2.0, 2.0, 0.0));
+  s.onPose(10.2, Pose2D{2.0, 2.0, 0.0});
   s.onLocalization(10.2, true, Eigen::Matrix3d::Identity() * 1e-3, "");
   EXPECT_EQ(s.check(10.25).reason, StopReason::kUnexpectedObstacle);
   s.onUserCommand(10.3);

@@ -1,6 +1,7 @@
 // ROS wrapper of PathTracker: /plan, tf map->base_link and /odom in; /wheel_torques out at a
 // fixed rate, plus ~reference, ~tracking_error and ~status for rviz and tests. Stops (controlled)
-// on /safety/stop (latched Bool), /user_stop (Empty) and kld/localized != "localized".
+// on /safety/stop (latched Bool), /user_stop (Empty) and /localization/status
+// (wheelchair_msgs/LocalizationStatus) not `localized`.
 // A path's reference is built on a worker thread; the control step only swaps it in.
 // ~path_status (actionlib_msgs/GoalStatus, latched) says the same as ~status and which path it
 // concerns (goal_id.stamp = that /plan's header.stamp): an end status of an older path is not
@@ -21,6 +22,7 @@
 #include <std_msgs/Bool.h>
 #include <std_msgs/Empty.h>
 #include <std_msgs/String.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
 
 #include <condition_variable>
 #include <cstdint>
@@ -41,7 +43,7 @@ class ControllerNodelet : public nodelet::Nodelet {
  private:
   /// A path waiting for its reference to be built.
   struct PathRequest {
-    std::vector<Pose2> poses;
+    std::vector<Pose2D> poses;
     double initial_speed = 0.0;
     uint64_t sequence = 0, stop_count = 0;
     ros::Time stamp;  ///< the /plan's header.stamp
@@ -54,7 +56,7 @@ class ControllerNodelet : public nodelet::Nodelet {
   void onPath(const nav_msgs::Path::ConstPtr& msg);
   void onSafetyStop(const std_msgs::Bool::ConstPtr& msg);
   void onUserStop(const std_msgs::Empty::ConstPtr& msg);
-  void onLocalized(const std_msgs::String::ConstPtr& msg);
+  void onLocalizationStatus(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg);
   void buildReferences();  ///< worker thread
   void onOdometry(const nav_msgs::Odometry::ConstPtr& msg);
   void onTimer(const ros::TimerEvent& event);
@@ -70,7 +72,7 @@ class ControllerNodelet : public nodelet::Nodelet {
   std::string map_frame_, base_frame_;
   WheelSpeedMeasurement wheels_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
-  ros::Subscriber path_sub_, odom_sub_, safety_sub_, user_stop_sub_, localized_sub_;
+  ros::Subscriber path_sub_, odom_sub_, safety_sub_, user_stop_sub_, localization_sub_;
   ros::Publisher torque_pub_, reference_pub_, error_pub_, status_pub_, path_status_pub_;
   ros::Timer timer_;
   std::string last_status_, last_path_status_;

@@ -2,6 +2,7 @@
 // Output y = P_l, the virtual point d+L ahead of the centre of mass P_c (L ahead of the axle P).
 #pragma once
 
+#include <wheelchair_core/pose2d.h>
 #include <wheelchair_description/chair_params.h>
 #include <wheelchair_description/model.h>
 
@@ -46,6 +47,6 @@ Eigen::Vector2d computedTorque(const Vector5& q, const Eigen::Vector2d& eta,
 Eigen::Vector2d rollingResistanceTorque(const Eigen::Vector2d& eta, const ChairParams& p);
 
 /// Configuration q of the model for an axle pose (x, y, theta) of base_link (P).
-Vector5 configurationAtAxlePose(const Eigen::Vector3d& pose, const ChairParams& p);
+Vector5 configurationAtAxlePose(const wheelchair_core::Pose2D& pose, const ChairParams& p);
 
 }  // namespace wheelchair_controller

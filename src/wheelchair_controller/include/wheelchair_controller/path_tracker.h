@@ -5,8 +5,11 @@
 #pragma once
 
 #include <wheelchair_controller/controlled_stop.h>
+#include <wheelchair_controller/driven_motion.h>
 #include <wheelchair_controller/linearization.h>
 #include <wheelchair_controller/output_trajectory.h>
+#include <wheelchair_controller/tracker_config.h>
+#include <wheelchair_core/pose2d.h>
 
 #include <cstdint>
 #include <map>
@@ -16,38 +19,6 @@
 #include <vector>
 
 namespace wheelchair_controller {
-
-struct TrackerConfig {
-  double natural_frequency = 2.5;   ///< w_n of the output error dynamics [rad/s]
-  double damping = 1.0;             ///< zeta (1: critically damped, no overshoot)
-  double max_feedback_accel = 0.5;  ///< |feedback part of v| limit [m/s^2]
-  PathLimits path_limits;           ///< comfort limits (speed 0.8, accel 0.5, jerk 1.0)
-  double limit_margin = 0.7;        ///< the nominal reference uses this share of the comfort limits
-  MotionLimits rotation_limits{0.6, 0.8, 1.6};  ///< in-place rotation [rad/s, rad/s^2, rad/s^3]
-  /// A phase starting with P_l off its reference: the offset decays within these (accel,
-  /// jerk) limits of its own (start_offset.h); the rider sees them amplified by the turning.
-  MotionLimits start_offset_limits{0.0, 0.1, 0.2};
-  double start_heading_tolerance = 0.5;   ///< [rad] larger: rotate in place before the path
-  double goal_position_tolerance = 0.05;  ///< [m] P_l at the end of the reference
-  double goal_heading_tolerance = 0.05;   ///< [rad]
-  double goal_timeout = 5.0;  ///< [s] after the reference ends, to settle within tolerance
-  /// Settled at the goal with P_l in tolerance but the heading not: rotate again about the
-  /// axle where it now is, at most this many times. Only P_l is controlled, so a localization
-  /// correction of a few cm during the final rotation turns into l-scaled heading error.
-  int max_goal_rotation_corrections = 2;
-  double stale_pose_timeout = 0.2;      ///< [s]
-  double stale_odometry_timeout = 0.2;  ///< [s]
-  double pose_jump = 0.5;             ///< [m] between the predicted and the measured axle position
-  double governor_soft_error = 0.10;  ///< [m] reference slows above this tracking error
-  double governor_hard_error = 0.40;  ///< [m] reference waits above this tracking error
-  double governor_rate = 1.0;         ///< [1/s] max change of the reference's time rate
-  double abort_error = 1.0;           ///< [m] tracking error that aborts
-  double prediction_step = 0.02;      ///< [s] RK2 step of the internal model
-  bool dynamic_terms = true;  ///< false: kinematic baseline (no f1, f2, no rolling feed-forward)
-  double kinematic_wheel_gain = 20.0;  ///< [N m s/rad] baseline's wheel-speed loop
-  bool compensate_rolling_resistance = true;
-  StopConfig stop;
-};
 
 enum class TrackerState {
   kIdle,
@@ -61,8 +32,8 @@ enum class TrackerState {
 const char* toString(TrackerState state);
 
 struct PoseMeasurement {
-  double stamp = 0.0;          ///< [s]
-  Pose2 pose = Pose2::Zero();  ///< base_link (axle centre P) in map
+  double stamp = 0.0;  ///< [s]
+  Pose2D pose;         ///< base_link (axle centre P) in map
 };
 struct WheelSpeedMeasurement {
   double stamp = 0.0;
@@ -82,8 +53,6 @@ struct TrackerOutput {
   double reference_rate = 1.0;  ///< governor's time rate (1: on schedule)
 };
 
-constexpr double kMinPathLength = 0.01;  ///< [m] shorter paths are "zero-length"
-
 /// A path made ready for tracking: the smoothed path and its time-parametrized reference.
 /// Building it is the expensive part (up to ~1 s of CPU on a long curvy path), so the nodelet
 /// does it off the control thread and swaps the result in (PathTracker::setPreparedPath).
@@ -94,7 +63,7 @@ struct PreparedPath {
   double initial_speed = 0.0;  ///< [m/s] forward speed the reference starts with
 };
 /// Smooths the path and builds its reference for a chair moving at initial_speed (m/s).
-PreparedPath preparePath(const std::vector<Pose2>& path, const ChairParams& chair,
+PreparedPath preparePath(const std::vector<Pose2D>& path, const ChairParams& chair,
                          const TrackerConfig& config, double initial_speed);
 
 class PathTracker {
@@ -103,7 +72,7 @@ class PathTracker {
 
   /// New path (base_link poses in map), replacing the current one. A rejected path
   /// (empty, non-finite, zero-length) starts a controlled stop; the reason is returned.
-  std::string setPath(const std::vector<Pose2>& path);
+  std::string setPath(const std::vector<Pose2D>& path);
   /// As setPath with a path prepared elsewhere (preparePath). Refused while a hold is active.
   std::string setPreparedPath(const PreparedPath& prepared);
   /// Forward speed [m/s] a path given now should start with (0 when not moving along a path).

@@ -2,6 +2,8 @@
 // heading, curvature and its derivative, parametrized by arc length.
 #pragma once
 
+#include <wheelchair_core/pose2d.h>
+
 #include <Eigen/Core>
 
 #include <string>
@@ -9,8 +11,7 @@
 
 namespace wheelchair_controller {
 
-/// Pose of base_link (axle centre P): x, y [m], theta [rad].
-using Pose2 = Eigen::Vector3d;
+using wheelchair_core::Pose2D;
 
 /// A point of the smooth path at arc length s.
 struct PathPoint {
@@ -22,14 +23,14 @@ struct PathPoint {
 };
 
 /// Why a path is refused (empty string: accepted).
-std::string pathRejectionReason(const std::vector<Pose2>& poses, double min_length);
+std::string pathRejectionReason(const std::vector<Pose2D>& poses, double min_length);
 
 class SmoothPath {
  public:
   /// Resamples the polyline every `spacing` metres and smooths it with a moving average over
   /// +-smoothing_half_window metres (ends kept). Throws std::invalid_argument on a path that
   /// pathRejectionReason refuses.
-  explicit SmoothPath(const std::vector<Pose2>& poses, double spacing = 0.05,
+  explicit SmoothPath(const std::vector<Pose2D>& poses, double spacing = 0.05,
                       double smoothing_half_window = 0.15);
 
   double length() const { return points_.back().s; }

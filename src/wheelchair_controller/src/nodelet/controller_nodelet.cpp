@@ -1,10 +1,12 @@
 #include <wheelchair_controller/controller_nodelet.h>
-#include <wheelchair_controller/wheel_speed_estimator.h>
-#include <wheelchair_description/package_paths.h>
+#include <wheelchair_core/kinematics.h>
+#include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/parameters.h>
+
+#include "controller_parameters.h"
 
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/Vector3Stamped.h>
-#include <tf2/utils.h>
 #include <wheelchair_msgs/WheelTorques.h>
 #include <pluginlib/class_list_macros.hpp>
 
@@ -14,11 +16,13 @@ namespace wheelchair_controller {
 
 namespace {
 
-/// yaw of a quaternion; NaN when it is not finite or has zero norm.
-double yawOf(const geometry_msgs::Quaternion& q) {
-  const double n = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-  if (!std::isfinite(n) || n < 1e-9) return NAN;
-  return tf2::getYaw(q);
+/// The path's poses; a pose whose orientation is not a unit quaternion gets a NaN heading, so
+/// that the path is refused as non-finite.
+std::vector<Pose2D> pathPoses(const nav_msgs::Path& msg) {
+  std::vector<Pose2D> poses = wheelchair_ros::fromPathMsg(msg);
+  for (size_t i = 0; i < poses.size(); ++i)
+    if (!wheelchair_ros::isNormalized(msg.poses[i].pose.orientation)) poses[i].yaw = NAN;
+  return poses;
 }
 
 /// The actionlib status of the current path while the tracker is in `state`.
@@ -54,25 +58,13 @@ ControllerNodelet::~ControllerNodelet() {
 
 void ControllerNodelet::onInit() {
   ros::NodeHandle& nh = getNodeHandle();
+  const ControllerParameters params = wheelchair_ros::loadParameters<ControllerParameters>(
+      getPrivateNodeHandle(), readControllerParameters);
   ros::NodeHandle& pnh = getPrivateNodeHandle();
-  chair_ = wheelchair_description::loadChairParams(
-      pnh.param("chair_params", wheelchair_description::chairParamsPathFromRos()));
-  TrackerConfig cfg;
-  pnh.param("natural_frequency", cfg.natural_frequency, cfg.natural_frequency);
-  pnh.param("damping", cfg.damping, cfg.damping);
-  pnh.param("max_speed", cfg.path_limits.longitudinal.speed, cfg.path_limits.longitudinal.speed);
-  pnh.param("max_accel", cfg.path_limits.longitudinal.accel, cfg.path_limits.longitudinal.accel);
-  pnh.param("max_jerk", cfg.path_limits.longitudinal.jerk, cfg.path_limits.longitudinal.jerk);
-  pnh.param("stale_pose_timeout", cfg.stale_pose_timeout, cfg.stale_pose_timeout);
-  pnh.param("stale_odometry_timeout", cfg.stale_odometry_timeout, cfg.stale_odometry_timeout);
-  pnh.param("pose_jump", cfg.pose_jump, cfg.pose_jump);
-  pnh.param("dynamic_terms", cfg.dynamic_terms, cfg.dynamic_terms);
-  cfg.stop.linear.accel = cfg.path_limits.longitudinal.accel;
-  cfg.stop.linear.jerk = cfg.path_limits.longitudinal.jerk;
-  tracker_ = std::make_unique<PathTracker>(chair_, cfg);
-  map_frame_ = pnh.param<std::string>("map_frame", "map");
-  base_frame_ = pnh.param<std::string>("base_frame", "base_link");
-  const double rate = pnh.param("rate", 50.0);
+  chair_ = wheelchair_description::loadChairParams(params.chair_file);
+  tracker_ = std::make_unique<PathTracker>(chair_, params.tracker);
+  map_frame_ = params.map_frame;
+  base_frame_ = params.base_frame;
 
   tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
   torque_pub_ = nh.advertise<wheelchair_msgs::WheelTorques>("wheel_torques", 10);
@@ -84,15 +76,14 @@ void ControllerNodelet::onInit() {
   path_sub_ = nh.subscribe("plan", 1, &ControllerNodelet::onPath, this);
   safety_sub_ = nh.subscribe("safety/stop", 1, &ControllerNodelet::onSafetyStop, this);
   user_stop_sub_ = nh.subscribe("user_stop", 5, &ControllerNodelet::onUserStop, this);
-  localized_sub_ = nh.subscribe("kld/localized", 5, &ControllerNodelet::onLocalized, this);
+  localization_sub_ =
+      nh.subscribe("localization/status", 5, &ControllerNodelet::onLocalizationStatus, this);
   odom_sub_ = nh.subscribe("odom", 10, &ControllerNodelet::onOdometry, this);
-  timer_ = nh.createTimer(ros::Duration(1.0 / rate), &ControllerNodelet::onTimer, this);
+  timer_ = nh.createTimer(ros::Duration(1.0 / params.rate), &ControllerNodelet::onTimer, this);
 }
 
 void ControllerNodelet::onPath(const nav_msgs::Path::ConstPtr& msg) {
-  std::vector<Pose2> poses;
-  for (const auto& p : msg->poses)
-    poses.emplace_back(p.pose.position.x, p.pose.position.y, yawOf(p.pose.orientation));
+  std::vector<Pose2D> poses = pathPoses(*msg);
   const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
   std::lock_guard<std::mutex> lock(mutex_);
   ++path_sequence_;  // a newer path supersedes one still being built
@@ -151,28 +142,31 @@ void ControllerNodelet::onUserStop(const std_msgs::Empty::ConstPtr&) {
   tracker_->abort("user stop");
 }
 
-void ControllerNodelet::onLocalized(const std_msgs::String::ConstPtr& msg) {
+void ControllerNodelet::onLocalizationStatus(
+    const wheelchair_msgs::LocalizationStatus::ConstPtr& msg) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (msg->data == "localized") {
+  if (msg->localized) {
     tracker_->release("localization");
   } else {
-    tracker_->hold("localization", "localization lost: " + msg->data);
+    tracker_->hold("localization",
+                   "localization lost: " + (msg->detail.empty() ? msg->sentence : msg->detail));
   }
 }
 
 void ControllerNodelet::onOdometry(const nav_msgs::Odometry::ConstPtr& msg) {
   std::lock_guard<std::mutex> lock(mutex_);
   wheels_.stamp = msg->header.stamp.toSec();
-  wheels_.eta = wheelSpeedsFromTwist(msg->twist.twist.linear.x, msg->twist.twist.angular.z, chair_);
+  const wheelchair_core::WheelRates rates =
+      wheelchair_core::wheelRates({msg->twist.twist.linear.x, msg->twist.twist.angular.z},
+                                  {chair_.wheel_radius, chair_.half_track});
+  wheels_.eta = {rates.right, rates.left};
 }
 
 std::optional<PoseMeasurement> ControllerNodelet::lookupPose() {
   try {
     const geometry_msgs::TransformStamped t =
         tf_buffer_->lookupTransform(map_frame_, base_frame_, ros::Time(0));
-    return PoseMeasurement{
-        t.header.stamp.toSec(),
-        {t.transform.translation.x, t.transform.translation.y, yawOf(t.transform.rotation)}};
+    return PoseMeasurement{t.header.stamp.toSec(), wheelchair_ros::toPose2D(t.transform)};
   } catch (const tf2::TransformException&) {
     return std::nullopt;
   }

@@ -50,9 +50,9 @@ void savePlaces(const std::string& yaml_path, const std::vector<wheelchair_hmi::
     entry.SetStyle(YAML::EmitterStyle::Flow);
     entry["name"] = p.name;
     entry["room"] = p.room;
-    entry["x"] = p.x;
-    entry["y"] = p.y;
-    entry["yaw"] = p.yaw;
+    entry["x"] = p.pose.x;
+    entry["y"] = p.pose.y;
+    entry["yaw"] = p.pose.yaw;
     list.push_back(entry);
   }
   root["places"] = list;

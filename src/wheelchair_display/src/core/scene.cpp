@@ -16,7 +16,7 @@ std::vector<RoomArea> roomAreas(const std::vector<wheelchair_hmi::Place>& places
   }
   for (auto& room : rooms) {
     std::vector<Eigen::Vector2d> points;
-    for (size_t i : room.places) points.emplace_back(places[i].x, places[i].y);
+    for (size_t i : room.places) points.push_back(places[i].pose.position());
     room.box = wheelchair_core::boundingBox(points);
     room.box.min -= Eigen::Vector2d(pad, pad);
     room.box.max += Eigen::Vector2d(pad, pad);

@@ -212,7 +212,7 @@ void DisplayNode::openRoom(const std::string& room) {
 void DisplayNode::choosePlace(size_t index) {
   if (index >= places_.size()) return;
   const auto& p = places_[index];
-  startRouteCheck(p.name, {p.x, p.y, p.yaw});
+  startRouteCheck(p.name, p.pose);
 }
 
 void DisplayNode::chooseSpot(const Eigen::Vector2d& world) {
@@ -338,7 +338,7 @@ std::string DisplayNode::savePlaceHere(const std::string& typed_name, const std:
   if (!problem.empty()) return problem;
   const std::string room_id = placeId(room).empty() ? "places" : placeId(room);
   auto edited = places_;
-  edited.push_back({id, room_id, chair_pose_->x, chair_pose_->y, chair_pose_->yaw});
+  edited.push_back({id, room_id, *chair_pose_});
   try {
     savePlaces(config_.places_file, edited);
     reloadPlaces();

@@ -308,7 +308,7 @@ void DisplayWindow::paintMap(QPainter& painter, double now) {
       }
       painter.drawRect(box);
       for (size_t i : rooms[r].places)
-        drawPlaceDot(painter, theme, qpoint(view_.toScreen({places[i].x, places[i].y})), dot * 0.7,
+        drawPlaceDot(painter, theme, qpoint(view_.toScreen(places[i].pose.position())), dot * 0.7,
                      lit ? Highlight::kGroup : Highlight::kNone);
     }
     for (size_t r = 0; r < rooms.size(); ++r) {
@@ -325,7 +325,7 @@ void DisplayWindow::paintMap(QPainter& painter, double now) {
       const bool in_room = std::find(shown.begin(), shown.end(), i) != shown.end();
       if (!in_room && places[i].name == lit_place) shown.insert(shown.begin(), i);
       if (!in_room)
-        drawPlaceDot(painter, theme, qpoint(view_.toScreen({places[i].x, places[i].y})), dot * 0.6,
+        drawPlaceDot(painter, theme, qpoint(view_.toScreen(places[i].pose.position())), dot * 0.6,
                      Highlight::kNone);
     }
     // The highlighted label is placed first: it always gets a free spot.
@@ -337,7 +337,7 @@ void DisplayWindow::paintMap(QPainter& painter, double now) {
     for (size_t i : shown) {
       const Highlight h = places[i].name == lit_place ? Highlight::kItem : Highlight::kNone;
       const QSizeF size = labelSize(qs(riderName(places[i].name)), layout_.label_font_px, h);
-      anchors.push_back(view_.toScreen({places[i].x, places[i].y}));
+      anchors.push_back(view_.toScreen(places[i].pose.position()));
       sizes.emplace_back(static_cast<int>(std::ceil(size.width())),
                          static_cast<int>(std::ceil(size.height())));
       levels.push_back(h);

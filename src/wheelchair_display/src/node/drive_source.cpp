@@ -38,7 +38,7 @@ void LegacyDriveSource::expectOwnGoal(const std::string& destination,
 std::string LegacyDriveSource::nameOf(const wheelchair_core::Pose2D& goal) const {
   if (own_goal_ && near(own_goal_->second, goal.x, goal.y)) return own_goal_->first;
   for (const auto& p : places_)
-    if (near(goal, p.x, p.y)) return p.name;
+    if (near(goal, p.pose.x, p.pose.y)) return p.name;
   return "";
 }
 

@@ -1,13 +1,15 @@
 // Following the harmonic potential from the start to the goal (paper, Algorithm 2, last step).
 #pragma once
 
-#include <wheelchair_harmonic_planner/config_space.h>
+#include <wheelchair_core/pose2d.h>
 #include <wheelchair_harmonic_planner/harmonic_solver.h>
-#include <wheelchair_harmonic_planner/plan_types.h>
 
+#include <string>
 #include <vector>
 
 namespace wheelchair_harmonic_planner {
+
+using wheelchair_core::Pose2D;
 
 struct DescentParams {
   double step_cells = 0.5;  ///< step length along the interpolated gradient [cells]

@@ -4,8 +4,7 @@
 // far down long corridors keep full relative precision and their gradient never underflows.
 #pragma once
 
-#include <wheelchair_harmonic_planner/config_space.h>
-#include <wheelchair_harmonic_planner/scaled_multigrid.h>
+#include <wheelchair_planner/config_space.h>
 
 #include <limits>
 #include <memory>
@@ -14,25 +13,25 @@
 
 namespace wheelchair_harmonic_planner {
 
+using wheelchair_planner::ConfigSpace;
+using wheelchair_planner::ConfigSpaceParams;
+
 struct HarmonicSolverParams {
   /// kDirect: sparse LDL^T with log-space triangular solves (log_cholesky.h), then SOR sweeps
-  /// only if its residual misses the tolerance; kSor: rescaled SOR; kMultigrid: experimental
-  /// (scaled_multigrid.h, README: does not converge on large mazes).
-  enum class Method { kDirect, kMultigrid, kSor };
+  /// only if its residual misses the tolerance; kSor: rescaled SOR.
+  enum class Method { kDirect, kSor };
   Method method = Method::kDirect;
   /// Convergence: max over free cells of the relative residual
   /// |sum_j w_ij u_j / sum_j w_ij - u_i| / u_i  (= |Delta log u| of one Jacobi step).
   double tolerance = 1e-5;
-  int max_iterations = 20000;  ///< V-cycles (multigrid) or sweeps (SOR, direct's polish)
-  int cycles_per_rescale = 1;  ///< multigrid: V-cycles between two re-scalings of the log field
-  MultigridParams multigrid;
+  int max_iterations = 20000;   ///< SOR sweeps (SOR, direct's polish)
   double omega = 0.0;           ///< SOR: factor; 0 = estimated from the widest free region
   int sweeps_per_rescale = 8;   ///< SOR: linear sweeps between two re-scalings of the log field
   bool use_conductance = true;  ///< false: plain Laplace (the paper's equation everywhere)
 };
 
-/// "direct", "sor" or "multigrid" (the planner's `solver` parameter); throws
-/// std::invalid_argument naming the choices otherwise.
+/// "direct" or "sor" (the planner's `solver` parameter); throws std::invalid_argument naming
+/// the choices otherwise ("multigrid" was removed: it did not converge on large mazes).
 HarmonicSolverParams::Method solverMethodFromName(const std::string& name);
 
 struct HarmonicSolution {
@@ -42,7 +41,7 @@ struct HarmonicSolution {
   int goal_iy = -1;
   /// log u per cell: 0 at the goal, -infinity at obstacles and cells not connected to the goal.
   std::vector<double> log_u;
-  int iterations = 0;          ///< V-cycles or SOR sweeps; direct: 1 (0 if the warm start already
+  int iterations = 0;          ///< SOR sweeps; direct: 1 (0 if the warm start already
                                ///< met the tolerance) + polishing SOR sweeps
   bool factor_reused = false;  ///< direct: the factors came from the cache (only the solves ran)
   double residual = std::numeric_limits<double>::infinity();
@@ -116,7 +115,7 @@ bool prepareHarmonicFactor(const ConfigSpace& cspace, const HarmonicSolverParams
 /// space, stopping when max |Delta phi| < tolerance. Returns phi per cell.
 struct JacobiResult {
   std::vector<double> phi;
-  int iterations = 0;  ///< V-cycles or SOR sweeps
+  int iterations = 0;  ///< Jacobi sweeps
   bool converged = false;
 };
 JacobiResult solvePaperJacobi(const ConfigSpace& cspace, int goal_ix, int goal_iy, double tolerance,

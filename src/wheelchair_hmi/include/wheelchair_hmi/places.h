@@ -2,6 +2,8 @@
 // rider chooses from.
 #pragma once
 
+#include <wheelchair_core/pose2d.h>
+
 #include <string>
 #include <vector>
 
@@ -10,9 +12,7 @@ namespace wheelchair_hmi {
 struct Place {
   std::string name;
   std::string room;
-  double x = 0.0;    ///< [m] in the map frame
-  double y = 0.0;    ///< [m]
-  double yaw = 0.0;  ///< [rad] heading to arrive with
+  wheelchair_core::Pose2D pose;  ///< in the map frame; yaw: the heading to arrive with
 };
 
 /// Reads `places: [{name, room, x, y, yaw}, ...]`. Throws std::runtime_error naming the file

@@ -4,6 +4,7 @@
 // press confirms it. While the chair drives, any press stops it.
 #pragma once
 
+#include <wheelchair_core/config.h>
 #include <wheelchair_hmi/places.h>
 
 #include <string>
@@ -15,7 +16,13 @@ struct ScannerOptions {
   double scan_interval = 2.0;    ///< [s] between two highlights
   double confirm_timeout = 8.0;  ///< [s] without a confirming press: back to scanning rooms
   int item_cycles = 2;           ///< full cycles through a room's places before going back
+
+  /// "" if usable, else every problem.
+  std::string validate() const;
 };
+
+/// The keys of ScannerOptions, named as the fields.
+void readScannerOptions(wheelchair_core::ConfigReader& reader, ScannerOptions& options);
 
 /// What the scanner wants the rest of the system to do after an event.
 struct ScanOutput {
@@ -30,7 +37,8 @@ class SwitchScanner {
  public:
   enum class Phase { kGroups, kItems, kConfirm, kDriving };
 
-  /// Groups are the rooms, larger rooms first (fewer scan steps on average).
+  /// Groups are the rooms, larger rooms first (fewer scan steps on average). Throws
+  /// std::invalid_argument without places or with options that do not validate().
   SwitchScanner(std::vector<Place> places, ScannerOptions options);
 
   /// Starts scanning rooms at time `now` [s].

@@ -5,29 +5,16 @@
 #pragma once
 
 #include <wheelchair_core/occupancy_map.h>
+#include <wheelchair_core/pose2d.h>
+#include <wheelchair_safety/safety_limits.h>
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 namespace wheelchair_safety {
-
-struct SafetyLimits {
-  double scan_timeout = 0.3;          ///< [s] laser silent this long -> stop
-  double pose_timeout = 0.3;          ///< [s] map->base_link (tf) older than this -> stop
-  double localization_timeout = 1.0;  ///< [s] no localization status this long -> stop
-  double max_position_std = 0.20;     ///< [m] largest std-dev of the x-y covariance
-  double max_heading_std = 0.20;      ///< [rad]
-  double stop_distance = 1.2;         ///< [m] watched along the path ahead of the chair
-  double corridor_half_width = 0.41;  ///< [m] chair half-width + 10 cm either side of the path
-  double map_tolerance = 0.15;        ///< [m] a return this close to a mapped obstacle is the map
-  int min_obstacle_returns = 3;       ///< returns needed to call an obstacle (noise rejection)
-  /// [s] a driver fault must last this long: the driver brakes at once by itself, and a motor
-  /// controller that re-arms within one command period (a late command) is not worth a
-  /// latched stop; a fault that persists (hardware, lost bus) is.
-  double driver_fault_grace = 0.25;
-};
 
 enum class StopReason {
   kNone,
@@ -41,13 +28,15 @@ enum class StopReason {
   kUserStop,
 };
 
-/// Words for the rider's screen and the log.
+/// Words for the rider: short, no frames or coordinates (e.g. "the laser scanner is silent").
 const char* describe(StopReason reason);
 
 struct SafetyVerdict {
   bool stop = false;
   StopReason reason = StopReason::kNone;
-  std::string detail;  ///< e.g. "no laser scan for 0.52 s"
+  std::string detail;  ///< for the log, e.g. "no laser scan for 0.52 s"
+  double value = NAN;  ///< the measured quantity behind a stop (an age [s], a std-dev, a count)
+  double limit = NAN;  ///< the limit it broke
 };
 
 class SafetySupervisor {
@@ -56,12 +45,12 @@ class SafetySupervisor {
 
   void onMap(const wheelchair_core::OccupancyMap& map);
   /// The path being driven, in the map frame (empty: nothing ahead to watch).
-  void onPath(std::vector<Eigen::Vector2d> path);
+  void onPath(const std::vector<wheelchair_core::Pose2D>& path);
   /// Localizer status: `localized` and the pose covariance (x, y, theta) in the map frame.
   void onLocalization(double stamp, bool localized, const Eigen::Matrix3d& covariance,
                       const std::string& why_not);
   /// The chair's pose (tf map -> base_link) and when it was valid.
-  void onPose(double stamp, const Eigen::Vector3d& pose);
+  void onPose(double stamp, const wheelchair_core::Pose2D& pose);
   /// A laser scan's returns, already in the map frame; non-finite points are ignored.
   void onScan(double stamp, const std::vector<Eigen::Vector2d>& returns_in_map);
   /// The base driver's status at `stamp`; a fault counts once it has lasted driver_fault_grace.
@@ -90,7 +79,7 @@ class SafetySupervisor {
   bool localized_ = false;
   std::string why_not_localized_ = "no localization yet";
   Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d pose_ = Eigen::Vector3d::Zero();
+  wheelchair_core::Pose2D pose_;
   int unexpected_returns_ = 0;
   bool driver_fault_ = false;
   double driver_fault_since_ = 0.0;

@@ -1,0 +1,55 @@
+// The path tracker's configuration: defaults in the declaration, validate() says what is wrong,
+// readTrackerConfig() names every key (the nodelet's private parameters, or a YAML file for an
+// offline tool: wheelchair_core/config.h).
+#pragma once
+
+#include <wheelchair_controller/controlled_stop.h>
+#include <wheelchair_controller/motion_profile.h>
+#include <wheelchair_controller/output_trajectory.h>
+#include <wheelchair_core/config.h>
+
+#include <string>
+
+namespace wheelchair_controller {
+
+struct TrackerConfig {
+  double natural_frequency = 2.5;   ///< w_n of the output error dynamics [rad/s]
+  double damping = 1.0;             ///< zeta (1: critically damped, no overshoot)
+  double max_feedback_accel = 0.5;  ///< |feedback part of v| limit [m/s^2]
+  PathLimits path_limits;           ///< comfort limits (speed 0.8, accel 0.5, jerk 1.0)
+  double limit_margin = 0.7;        ///< the nominal reference uses this share of the comfort limits
+  MotionLimits rotation_limits{0.6, 0.8, 1.6};  ///< in-place rotation [rad/s, rad/s^2, rad/s^3]
+  /// A phase starting with P_l off its reference: the offset decays within these (accel,
+  /// jerk) limits of its own (start_offset.h); the rider sees them amplified by the turning.
+  MotionLimits start_offset_limits{0.0, 0.1, 0.2};
+  double start_heading_tolerance = 0.5;   ///< [rad] larger: rotate in place before the path
+  double goal_position_tolerance = 0.05;  ///< [m] P_l at the end of the reference
+  double goal_heading_tolerance = 0.05;   ///< [rad]
+  double goal_timeout = 5.0;  ///< [s] after the reference ends, to settle within tolerance
+  /// Settled at the goal with P_l in tolerance but the heading not: rotate again about the
+  /// axle where it now is, at most this many times. Only P_l is controlled, so a localization
+  /// correction of a few cm during the final rotation turns into l-scaled heading error.
+  int max_goal_rotation_corrections = 2;
+  double stale_pose_timeout = 0.2;      ///< [s]
+  double stale_odometry_timeout = 0.2;  ///< [s]
+  double pose_jump = 0.5;             ///< [m] between the predicted and the measured axle position
+  double governor_soft_error = 0.10;  ///< [m] reference slows above this tracking error
+  double governor_hard_error = 0.40;  ///< [m] reference waits above this tracking error
+  double governor_rate = 1.0;         ///< [1/s] max change of the reference's time rate
+  double abort_error = 1.0;           ///< [m] tracking error that aborts
+  double prediction_step = 0.02;      ///< [s] RK2 step of the internal model
+  bool dynamic_terms = true;  ///< false: kinematic baseline (no f1, f2, no rolling feed-forward)
+  double kinematic_wheel_gain = 20.0;  ///< [N m s/rad] baseline's wheel-speed loop
+  bool compensate_rolling_resistance = true;
+  StopConfig stop;
+
+  /// Empty if usable, else every problem (wheelchair_core::ConfigChecks).
+  std::string validate() const;
+};
+
+/// Keys: natural_frequency, damping, max_speed, max_accel, max_jerk (the path's comfort
+/// limits; the controlled stop brakes within the same linear accel and jerk),
+/// stale_pose_timeout, stale_odometry_timeout, pose_jump, dynamic_terms.
+void readTrackerConfig(wheelchair_core::ConfigReader& reader, TrackerConfig& config);
+
+}  // namespace wheelchair_controller

@@ -1,0 +1,43 @@
+// Every private parameter of the controller nodelet: the tracker's keys (readTrackerConfig) and
+// the nodelet's own. Read once in onInit by wheelchair_ros::loadParameters: an unknown or renamed
+// key or an invalid value refuses the nodelet.
+#pragma once
+
+#include <wheelchair_controller/tracker_config.h>
+#include <wheelchair_core/config.h>
+#include <wheelchair_description/package_paths.h>
+
+#include <string>
+
+namespace wheelchair_controller {
+
+struct ControllerParameters {
+  TrackerConfig tracker;
+  /// The chair's description (wheelchair_description's chair.yaml, found at run time).
+  std::string chair_file = wheelchair_description::chairParamsPathFromRos();
+  std::string map_frame = "map";
+  std::string base_frame = "base_link";
+  double rate = 50.0;  ///< [Hz] control steps and /wheel_torques
+
+  std::string validate() const {
+    wheelchair_core::ConfigChecks checks;
+    checks.positive("rate", rate)
+        .check(!chair_file.empty(), "chair_file must name the chair's description file")
+        .check(!map_frame.empty() && !base_frame.empty(), "map_frame and base_frame must be set");
+    const std::string tracker_problem = tracker.validate();
+    checks.check(tracker_problem.empty(), tracker_problem);
+    return checks.result();
+  }
+};
+
+inline void readControllerParameters(wheelchair_core::ConfigReader& reader,
+                                     ControllerParameters& p) {
+  reader.renamed("chair_params", "chair_file");
+  reader.read("chair_file", p.chair_file);
+  reader.read("map_frame", p.map_frame);
+  reader.read("base_frame", p.base_frame);
+  reader.read("rate", p.rate);
+  readTrackerConfig(reader, p.tracker);
+}
+
+}  // namespace wheelchair_controller

@@ -1,0 +1,1 @@
+"""wheelchair_test: the system tests' Python support (`wheelchair_test.harness`)."""
