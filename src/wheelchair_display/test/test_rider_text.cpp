@@ -66,6 +66,8 @@ TEST(RiderText, ASafetyStopWinsAndUsesTheSupervisorsSentence) {
   EXPECT_EQ(describe(in).tone, Message::Tone::kStopped);
   in.safety.sentence = "Stopped: a person is in the way.";
   EXPECT_EQ(describe(in).status, "Stopped: a person is in the way.");
+  in.safety.sentence = "stopped by the rider";  // another node's words, made a sentence
+  EXPECT_EQ(describe(in).status, "Stopped by the rider.");
 }
 
 TEST(RiderText, NotKnowingWhereTheChairIsComesBeforeAnyDrive) {

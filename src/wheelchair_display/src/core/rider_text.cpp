@@ -25,8 +25,13 @@ std::string sentence(std::string text) {
   return text;
 }
 
+/// Another node's words (the supervisor's, the localizer's, the navigator's) as a sentence:
+/// capital first letter, a full stop at the end; `fallback` when there are none.
 std::string orDefault(const std::string& given, const std::string& fallback) {
-  return given.empty() ? fallback : given;
+  if (given.empty()) return fallback;
+  std::string text = sentence(given);
+  if (text.back() != '.' && text.back() != '!' && text.back() != '?') text += '.';
+  return text;
 }
 
 /// The scanning HMI's prompt (what a switch press does now), or "".
