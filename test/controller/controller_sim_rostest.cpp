@@ -23,6 +23,7 @@
 #include <std_msgs/Bool.h>
 #include <std_msgs/String.h>
 #include <tf2_ros/static_transform_broadcaster.h>
+#include <wheelchair_description_testing/chair_file.h>
 #include <wheelchair_msgs/WheelTorques.h>
 #include <wheelchair_sim/SetPose.h>
 
@@ -79,8 +80,7 @@ class SimHarness {
  public:
   SimHarness() {
     ros::NodeHandle nh;
-    chair_ =
-        wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath());
+    chair_ = wheelchair_description::test::shippedChair();
     truth_sub_ = nh.subscribe("sim/ground_truth", 200, &SimHarness::onTruth, this);
     ref_sub_ = nh.subscribe("controller/reference", 200, &SimHarness::onReference, this);
     status_sub_ = nh.subscribe("controller/status", 20, &SimHarness::onStatus, this);

@@ -6,8 +6,8 @@
 //     message's creation to the frame's stamp (fake bus: stamped when put on the bus; UDP:
 //     stamped when received by the other process' socket).
 #include <wheelchair_base_driver/base_driver_core.h>
-#include <wheelchair_base_driver/fake_bus.h>
-#include <wheelchair_base_driver/udp_transport.h>
+#include <wheelchair_can/fake_bus.h>
+#include <wheelchair_can/udp_transport.h>
 
 #include <algorithm>
 #include <atomic>
@@ -24,6 +24,7 @@
 #include <vector>
 
 using namespace wheelchair_base_driver;
+using namespace wheelchair_can;
 using Clock = std::chrono::steady_clock;
 
 namespace {

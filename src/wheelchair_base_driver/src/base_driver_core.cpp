@@ -1,10 +1,14 @@
 #include <wheelchair_base_driver/base_driver_core.h>
+#include <wheelchair_can/can_error.h>
 
 #include <cmath>
 #include <stdexcept>
 
 namespace wheelchair_base_driver {
 
+using wheelchair_can::CanFrame;
+using wheelchair_can::SequenceTracker;
+namespace protocol = wheelchair_can::protocol;
 using protocol::ControllerState;
 
 namespace {
@@ -20,26 +24,6 @@ bool dueOnGrid(double now, double period, bool force, double& next_due) {
   return true;
 }
 }  // namespace
-
-void validate(const DriverConfig& c) {
-  const auto positive = [](double v, const char* name) {
-    if (!(std::isfinite(v) && v > 0)) {
-      throw std::invalid_argument(std::string("DriverConfig: ") + name + " must be finite and > 0");
-    }
-  };
-  positive(c.geometry.wheel_radius, "wheel_radius");
-  positive(c.geometry.half_track, "half_track");
-  positive(c.geometry.counts_per_rev, "counts_per_rev");
-  positive(c.geometry.max_wheel_rate, "max_wheel_rate");
-  positive(c.max_torque, "max_torque");
-  positive(c.command_period, "command_period");
-  positive(c.heartbeat_period, "heartbeat_period");
-  positive(c.command_timeout, "command_timeout");
-  positive(c.controller_timeout, "controller_timeout");
-  if (c.max_torque > protocol::kMaxEncodableTorque) {
-    throw std::invalid_argument("DriverConfig: max_torque exceeds the protocol's 327.67 N m");
-  }
-}
 
 const char* driverStateName(DriverState s) {
   switch (s) {
@@ -82,9 +66,10 @@ const char* torqueVerdictName(TorqueVerdict v) {
   return "?";
 }
 
-BaseDriverCore::BaseDriverCore(const DriverConfig& config, CanTransport& transport)
+BaseDriverCore::BaseDriverCore(const DriverConfig& config, wheelchair_can::CanTransport& transport)
     : config_(config), transport_(transport), odometry_(config.geometry) {
-  validate(config_);
+  const std::string problem = config_.validate();
+  if (!problem.empty()) throw std::invalid_argument("base driver: " + problem);
 }
 
 TorqueVerdict BaseDriverCore::onTorqueMessage(double left, double right, bool brake, double stamp,
@@ -139,7 +124,7 @@ void BaseDriverCore::spinOnce(double now) {
 void BaseDriverCore::processFrame(const CanFrame& frame, double now) {
   if (frame.error) {
     ++counters_.error_frames;
-    last_bus_error_ = decodeErrorFrame(frame).description;
+    last_bus_error_ = wheelchair_can::decodeErrorFrame(frame).description;
     return;
   }
   ++counters_.frames_received;

@@ -1,10 +1,9 @@
 #include <wheelchair_base_driver/base_driver_nodelet.h>
-
-#include <wheelchair_base_driver/fake_bus.h>
-#include <wheelchair_base_driver/transport_factory.h>
-#include <wheelchair_base_driver/udp_transport.h>
-#include <wheelchair_description/chair_params.h>
-#include <wheelchair_description/package_paths.h>
+#include <wheelchair_can/fake_bus.h>
+#include <wheelchair_can/udp_transport.h>
+#include <wheelchair_description/chair_file.h>
+#include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/parameters.h>
 
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -15,15 +14,11 @@
 
 namespace wheelchair_base_driver {
 
+namespace can = wheelchair_can;
+namespace protocol = wheelchair_can::protocol;
+
 namespace {
 double rosNow() { return ros::Time::now().toSec(); }
-
-geometry_msgs::Quaternion yawToQuaternion(double yaw) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(yaw / 2);
-  q.w = std::cos(yaw / 2);
-  return q;
-}
 }  // namespace
 
 BaseDriverNodelet::~BaseDriverNodelet() {
@@ -32,61 +27,34 @@ BaseDriverNodelet::~BaseDriverNodelet() {
   if (core_) core_->engageEstop(rosNow());  // leave the chair braked
 }
 
+BaseDriverSettings BaseDriverNodelet::loadSettings() {
+  const ros::NodeHandle& pnh = getPrivateNodeHandle();
+  const wheelchair_description::ChairParams chair = wheelchair_description::loadChairOf(pnh);
+  BaseDriverSettings defaults;
+  defaults.driver.geometry.wheel_radius = chair.wheel_radius;
+  defaults.driver.geometry.half_track = chair.half_track;
+  defaults.driver.max_torque = chair.max_wheel_torque;
+  return wheelchair_ros::loadParameters(pnh, readBaseDriverSettings, defaults);
+}
+
 void BaseDriverNodelet::onInit() {
   ros::NodeHandle& nh = getNodeHandle();
   ros::NodeHandle& pnh = getPrivateNodeHandle();
+  settings_ = loadSettings();
+  const DriverConfig& config = settings_.driver;
 
-  const std::string chair_file =
-      pnh.param<std::string>("chair_params", wheelchair_description::chairParamsPathFromRos());
-  const wheelchair_description::ChairParams chair =
-      wheelchair_description::loadChairParams(chair_file);
-  DriverConfig config;
-  config.geometry.wheel_radius = chair.wheel_radius;
-  config.geometry.half_track = chair.half_track;
-  config.geometry.counts_per_rev = pnh.param("counts_per_rev", 4096.0);
-  config.geometry.max_wheel_rate = pnh.param("max_wheel_rate", 40.0);
-  config.max_torque = pnh.param("max_torque", chair.max_wheel_torque);
-  config.command_period = 1.0 / pnh.param("command_rate", 100.0);
-  config.command_timeout = pnh.param("command_timeout", 0.1);
-  config.controller_timeout = pnh.param("controller_timeout", 0.2);
-  validate(config);
-
-  TransportOptions options;
-  options.kind = pnh.param<std::string>("transport", "socketcan");
-  options.interface = pnh.param<std::string>("interface", "can0");
-  options.udp_local_port = pnh.param("udp_local_port", 47110);
-  options.udp_remote_port = pnh.param("udp_remote_port", 47111);
-  options.fake_bus = pnh.param<std::string>("fake_bus", "wheelchair_can");
+  TransportOptions options = settings_.transport;
   options.filters = driverReceiveFilters();
   options.clock = rosNow;
   transport_ = makeTransport(options);
-  if (auto* udp = dynamic_cast<UdpTransport*>(transport_.get())) {
+  if (auto* udp = dynamic_cast<can::UdpTransport*>(transport_.get())) {
     pnh.setParam("udp_bound_port", static_cast<int>(udp->localPort()));
   }
   core_ = std::make_unique<BaseDriverCore>(config, *transport_);
+  if (options.kind == "fake" && settings_.emulate_controller) startEmulatedController();
 
-  if (options.kind == "fake" && pnh.param("emulate_controller", true)) {
-    emulated_port_ = FakeBus::named(options.fake_bus)->connect("emulated_motor_controller");
-    emulated_plant_ = std::make_unique<SimpleWheelPlant>(pnh.param("emulated_wheel_inertia", 2.0),
-                                                         pnh.param("emulated_wheel_damping", 4.0));
-    EmulatedControllerConfig mc;
-    mc.counts_per_rev = config.geometry.counts_per_rev;
-    mc.max_torque = config.max_torque;
-    emulated_controller_ =
-        std::make_unique<EmulatedMotorController>(mc, *emulated_port_, *emulated_plant_);
-    NODELET_INFO("fake transport with an emulated motor controller and a trivial wheel plant");
-  }
-
-  odom_frame_ = pnh.param<std::string>("odom_frame", "odom");
-  base_frame_ = pnh.param<std::string>("base_frame", "base_link");
-  left_joint_ = pnh.param<std::string>("left_wheel_joint", "left_wheel_joint");
-  right_joint_ = pnh.param<std::string>("right_wheel_joint", "right_wheel_joint");
-  publish_tf_ = pnh.param("publish_tf", true);
-  // /odom, tf and /joint_states at most at odom_rate (0: on every encoder frame): each one
-  // wakes every tf listener and the description publisher of the process.
-  const double odom_rate = pnh.param("odom_rate", 0.0);
-  odom_period_ = odom_rate > 0.0 && std::isfinite(odom_rate) ? 1.0 / odom_rate : 0.0;
-
+  // /odom, tf and /joint_states at most at odom_rate (0: on every encoder frame).
+  odom_period_ = settings_.odom_rate > 0.0 ? 1.0 / settings_.odom_rate : 0.0;
   odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
   joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
   status_pub_ = pnh.advertise<diagnostic_msgs::DiagnosticStatus>("status", 10, true);
@@ -100,14 +68,25 @@ void BaseDriverNodelet::onInit() {
   estop_sub_ = nh.subscribe("estop", 10, &BaseDriverNodelet::onEstopTopic, this);
   estop_srv_ = pnh.advertiseService("estop", &BaseDriverNodelet::onEstopService, this);
   clear_srv_ = pnh.advertiseService("clear_estop", &BaseDriverNodelet::onClearEstopService, this);
-  // The bus is polled, the watchdogs checked and commands sent at spin_rate: 100 Hz = the
-  // command rate; a 100 ms watchdog then fires within 10 ms of its deadline.
-  timer_ = nh.createTimer(ros::Duration(1.0 / pnh.param("spin_rate", 100.0)),
-                          &BaseDriverNodelet::onTimer, this);
+  timer_ =
+      nh.createTimer(ros::Duration(1.0 / settings_.spin_rate), &BaseDriverNodelet::onTimer, this);
   NODELET_INFO("base driver on %s: r=%.3f m, b=%.3f m, max torque %.1f N m, watchdogs %.0f/%.0f ms",
                transport_->describe().c_str(), config.geometry.wheel_radius,
                config.geometry.half_track, config.max_torque, config.command_timeout * 1e3,
                config.controller_timeout * 1e3);
+}
+
+void BaseDriverNodelet::startEmulatedController() {
+  emulated_port_ =
+      can::FakeBus::named(settings_.transport.fake_bus)->connect("emulated_motor_controller");
+  emulated_plant_ = std::make_unique<can::SimpleWheelPlant>(settings_.emulated_wheel_inertia,
+                                                            settings_.emulated_wheel_damping);
+  can::EmulatedControllerConfig mc;
+  mc.counts_per_rev = settings_.driver.geometry.counts_per_rev;
+  mc.max_torque = settings_.driver.max_torque;
+  emulated_controller_ =
+      std::make_unique<can::EmulatedMotorController>(mc, *emulated_port_, *emulated_plant_);
+  NODELET_INFO("fake transport with an emulated motor controller and a trivial wheel plant");
 }
 
 void BaseDriverNodelet::onTorques(const wheelchair_msgs::WheelTorques::ConstPtr& msg) {
@@ -176,9 +155,9 @@ void BaseDriverNodelet::onTimer(const ros::TimerEvent&) {
     last_status_time_ = now;
   }
   if (isFault(state)) {
-    const TransportStats bus = transport_->stats();
+    const can::TransportStats bus = transport_->stats();
     NODELET_WARN_THROTTLE(5.0, "base driver braking: %s; %s is %s (%s)", driverStateName(state),
-                          transport_->describe().c_str(), busStateName(bus.state),
+                          transport_->describe().c_str(), can::busStateName(bus.state),
                           bus.last_error.empty() ? "no bus error" : bus.last_error.c_str());
   }
   const OdometryState& odo = core_->odometry();
@@ -194,11 +173,9 @@ void BaseDriverNodelet::publishOdometry(const ros::Time& stamp) {
   const OdometryState& odo = core_->odometry();
   nav_msgs::Odometry msg;
   msg.header.stamp = stamp;
-  msg.header.frame_id = odom_frame_;
-  msg.child_frame_id = base_frame_;
-  msg.pose.pose.position.x = odo.x;
-  msg.pose.pose.position.y = odo.y;
-  msg.pose.pose.orientation = yawToQuaternion(odo.theta);
+  msg.header.frame_id = settings_.odom_frame;
+  msg.child_frame_id = settings_.base_frame;
+  msg.pose.pose = wheelchair_ros::toPoseMsg(odo.pose);
   msg.twist.twist.linear.x = odo.v;
   msg.twist.twist.angular.z = odo.omega;
   // Wheel odometry: x, y, yaw drift slowly; z, roll, pitch are not observed (large variance).
@@ -209,18 +186,16 @@ void BaseDriverNodelet::publishOdometry(const ros::Time& stamp) {
     msg.twist.covariance[i * 7] = kTwist[i];
   }
   odom_pub_.publish(msg);
-  if (publish_tf_) {
+  if (settings_.publish_tf) {
     geometry_msgs::TransformStamped t;
     t.header = msg.header;
-    t.child_frame_id = base_frame_;
-    t.transform.translation.x = odo.x;
-    t.transform.translation.y = odo.y;
-    t.transform.rotation = msg.pose.pose.orientation;
+    t.child_frame_id = settings_.base_frame;
+    t.transform = wheelchair_ros::toTransformMsg(odo.pose);
     tf_->sendTransform(t);
   }
   sensor_msgs::JointState joints;
   joints.header.stamp = stamp;
-  joints.name = {left_joint_, right_joint_};
+  joints.name = {settings_.left_wheel_joint, settings_.right_wheel_joint};
   joints.position = {odo.left_angle, odo.right_angle};
   joints.velocity = {odo.left_rate, odo.right_rate};
   joint_pub_.publish(joints);
@@ -238,11 +213,12 @@ void BaseDriverNodelet::publishStatus() {
 
 void BaseDriverNodelet::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s) {
   const DriverState state = core_->state();
-  const TransportStats bus = transport_->stats();
+  const can::TransportStats bus = transport_->stats();
   const DriverCounters& n = core_->counters();
-  if (isFault(state) || bus.state == BusState::kBusOff || bus.state == BusState::kClosed) {
+  if (isFault(state) || bus.state == can::BusState::kBusOff ||
+      bus.state == can::BusState::kClosed) {
     s.summary(diagnostic_msgs::DiagnosticStatus::ERROR, driverStateName(state));
-  } else if (state == DriverState::kCommandTimeout || bus.state != BusState::kActive) {
+  } else if (state == DriverState::kCommandTimeout || bus.state != can::BusState::kActive) {
     s.summary(diagnostic_msgs::DiagnosticStatus::WARN, driverStateName(state));
   } else {
     s.summary(diagnostic_msgs::DiagnosticStatus::OK, driverStateName(state));
@@ -253,7 +229,7 @@ void BaseDriverNodelet::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s)
   s.add("commanded left [N m]", core_->lastCommand().left);
   s.add("commanded right [N m]", core_->lastCommand().right);
   s.add("controller faults", protocol::describeFaults(core_->controllerFaults()));
-  s.add("bus state", busStateName(bus.state));
+  s.add("bus state", can::busStateName(bus.state));
   s.add("bus last error", bus.last_error.empty() ? core_->lastBusError() : bus.last_error);
   s.add("frames sent", n.frames_sent);
   s.add("send failures", n.send_failures);

@@ -4,12 +4,8 @@
 
 namespace wheelchair_base_driver {
 
-Twist2D bodyTwistFromWheelRates(double left_rate, double right_rate, const WheelGeometry& g) {
-  // Eq. 10-11 (kinematics of P): v = r (psi_r_dot + psi_l_dot)/2, omega = r (psi_r_dot -
-  // psi_l_dot)/(2b).
-  return {g.wheel_radius * (right_rate + left_rate) / 2.0,
-          g.wheel_radius * (right_rate - left_rate) / (2.0 * g.half_track)};
-}
+namespace core = wheelchair_core;
+namespace protocol = wheelchair_can::protocol;
 
 bool EncoderOdometry::update(const protocol::EncoderCounts& counts, double stamp) {
   if (!has_reference_) {
@@ -35,16 +31,14 @@ bool EncoderOdometry::update(const protocol::EncoderCounts& counts, double stamp
   state_.right_angle += d_right;
   state_.left_rate = d_left / dt;
   state_.right_rate = d_right / dt;
-  const Twist2D twist = bodyTwistFromWheelRates(state_.left_rate, state_.right_rate, geometry_);
+  const core::WheelBase base = geometry_.base();
+  const core::BodyTwist twist = core::bodyTwist({state_.right_rate, state_.left_rate}, base);
   state_.v = twist.v;
   state_.omega = twist.omega;
-  // Exact integration over dt assuming constant twist (midpoint heading for the chord).
-  const double d_theta = twist.omega * dt;
-  const double d_s = twist.v * dt;
-  const double chord = std::abs(d_theta) < 1e-9 ? d_s : d_s * std::sin(d_theta / 2) / (d_theta / 2);
-  state_.x += chord * std::cos(state_.theta + d_theta / 2);
-  state_.y += chord * std::sin(state_.theta + d_theta / 2);
-  state_.theta = std::remainder(state_.theta + d_theta, 2.0 * M_PI);
+  // The arc rolled since the last sample, exact for a constant twist over dt.
+  state_.pose = core::integrateArc(
+      state_.pose,
+      core::bodyMotion(base.wheel_radius * d_right, base.wheel_radius * d_left, base.half_track));
   return true;
 }
 

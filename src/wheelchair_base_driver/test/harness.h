@@ -1,16 +1,24 @@
 // A driver and an emulated motor controller with a trivial plant on one fake bus, stepped
-// with injected time. Shared by the driver, controller and fuzz tests.
+// with injected time. Shared by the driver and fuzz tests.
 #pragma once
 
 #include <wheelchair_base_driver/base_driver_core.h>
-#include <wheelchair_base_driver/emulated_motor_controller.h>
-#include <wheelchair_base_driver/fake_bus.h>
+#include <wheelchair_can/emulated_motor_controller.h>
+#include <wheelchair_can/fake_bus.h>
+#include <wheelchair_can/simple_wheel_plant.h>
 
 #include <cmath>
 #include <functional>
 #include <memory>
 
 namespace wheelchair_base_driver::test {
+
+using wheelchair_can::CanFrame;
+using wheelchair_can::EmulatedControllerConfig;
+using wheelchair_can::EmulatedMotorController;
+using wheelchair_can::FakeBus;
+using wheelchair_can::FakeBusEndpoint;
+using wheelchair_can::SimpleWheelPlant;
 
 inline DriverConfig testDriverConfig() {
   DriverConfig c;

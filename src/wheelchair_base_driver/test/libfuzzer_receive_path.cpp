@@ -1,16 +1,24 @@
-// libFuzzer target for the decoder and the driver's receive path (optional; the seeded gtest
-// Fuzz.* is the one in the suite). Each 13-byte chunk of the input is one frame:
-// id (2, LE, 11 bits), flags (1: bit0 extended, bit1 remote, bit2 error), dlc (1, mod 9), data (8),
-// time step (1, x 0.1 ms). Build and run:
-//   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -Iinclude \
-//     test/libfuzzer_receive_path.cpp src/*.cpp -o /tmp/fuzz_rx && /tmp/fuzz_rx -runs=1000000
+// libFuzzer target for the decoder (wheelchair_can) and the driver's receive path (optional;
+// the seeded gtests Fuzz.* of both packages are the ones in the suite). Each 13-byte chunk of the
+// input is one frame: id (2, LE, 11 bits), flags (1: bit0 extended, bit1 remote, bit2 error),
+// dlc (1, mod 9), data (8), time step (1, x 0.1 ms). Build and run from src/:
+//   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -Iwheelchair_base_driver/include
+//   \
+//     -Iwheelchair_can/include -Iwheelchair_core/include -Iwheelchair_description/include \
+//     -I/usr/include/eigen3 wheelchair_base_driver/test/libfuzzer_receive_path.cpp \
+//     wheelchair_base_driver/src/{base_driver_core,driver_config,encoder_odometry}.cpp \
+//     wheelchair_can/src/*.cpp wheelchair_core/src/{config,kinematics}.cpp -lyaml-cpp \
+//     -o /tmp/fuzz_rx && /tmp/fuzz_rx -runs=1000000
 #include <wheelchair_base_driver/base_driver_core.h>
-#include <wheelchair_base_driver/fake_bus.h>
+#include <wheelchair_can/fake_bus.h>
 
 #include <cmath>
 #include <cstdlib>
 
 using namespace wheelchair_base_driver;
+using wheelchair_can::CanFrame;
+using wheelchair_can::FakeBus;
+namespace protocol = wheelchair_can::protocol;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   auto bus = FakeBus::create();
@@ -44,7 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool braking = !c.enable && c.brake && c.left == 0.0 && c.right == 0.0;
     if (!(commanded || braking)) std::abort();
     if (driver.controllerFaults() != 0 && !braking) std::abort();
-    if (!std::isfinite(driver.odometry().x)) std::abort();
+    if (!std::isfinite(driver.odometry().pose.x)) std::abort();
   }
   return 0;
 }

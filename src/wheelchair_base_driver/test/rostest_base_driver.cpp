@@ -1,8 +1,9 @@
 // System tests of the driver node over the UDP transport: this node plays the chair — it owns
 // sim time (/clock), an EmulatedMotorController and a trivial wheel plant — and talks to the
 // driver through the protocol. One .test file per behaviour selects one test with --gtest_filter.
-#include <wheelchair_base_driver/emulated_motor_controller.h>
-#include <wheelchair_base_driver/udp_transport.h>
+#include <wheelchair_can/emulated_motor_controller.h>
+#include <wheelchair_can/simple_wheel_plant.h>
+#include <wheelchair_can/udp_transport.h>
 
 #include <diagnostic_msgs/DiagnosticStatus.h>
 #include <gtest/gtest.h>
@@ -24,6 +25,11 @@
 
 namespace wheelchair_base_driver {
 namespace {
+
+using wheelchair_can::EmulatedControllerConfig;
+using wheelchair_can::EmulatedMotorController;
+using wheelchair_can::SimpleWheelPlant;
+using wheelchair_can::UdpTransport;
 
 constexpr double kStep = 0.001;  // sim seconds per loop step (one step per 2 ms wall time)
 

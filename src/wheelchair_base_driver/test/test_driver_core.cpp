@@ -9,7 +9,10 @@
 namespace wheelchair_base_driver {
 namespace {
 
+namespace protocol = wheelchair_can::protocol;
 using protocol::TorqueCommand;
+using test::CanFrame;
+using test::FakeBusEndpoint;
 using test::Harness;
 
 /// Every torque command and heartbeat seen on the bus (the monitor endpoint).
@@ -72,9 +75,9 @@ TEST_F(DriverTest, TorquesReachTheMotorsWithScaleAndSign) {
   driveFor(0.5, 10.0, 10.0);
   EXPECT_GT(h.plant.leftRate(), 0.0);  // positive torque rolls the wheel forward
   EXPECT_GT(h.driver.odometry().v, 0.0);
-  EXPECT_GT(h.driver.odometry().x, 0.0);
+  EXPECT_GT(h.driver.odometry().pose.x, 0.0);
   // The first 2 ms of (12.34, -7.89) spun the left wheel up more: the chair turned right.
-  EXPECT_LT(h.driver.odometry().theta, 0.0);
+  EXPECT_LT(h.driver.odometry().pose.yaw, 0.0);
 }
 
 TEST_F(DriverTest, CommandSilenceBrakesAtTheTimeout) {
@@ -233,7 +236,7 @@ TEST_F(DriverTest, OdometryMatchesTheWheelsMotion) {
   EXPECT_NEAR(odo.right_angle, h.plant.wheelAngles().right, count + 0.011 * h.plant.rightRate());
   EXPECT_NEAR(odo.v, 0.17 * (h.plant.leftRate() + h.plant.rightRate()) / 2, 0.02);
   EXPECT_NEAR(odo.omega, 0.17 * (h.plant.rightRate() - h.plant.leftRate()) / 0.56, 0.05);
-  EXPECT_GT(odo.theta, 0.0);  // right wheel faster: turning left (counter-clockwise)
+  EXPECT_GT(odo.pose.yaw, 0.0);  // right wheel faster: turning left (counter-clockwise)
   EXPECT_EQ(h.driver.counters().encoder_lost, 0u);
 }
 
@@ -252,11 +255,14 @@ TEST_F(DriverTest, ErrorFramesAndForeignCommandsAreCounted) {
 TEST(DriverConfig, ValidationNamesTheBadValue) {
   DriverConfig c = test::testDriverConfig();
   c.geometry.wheel_radius = std::nan("");
-  EXPECT_THROW(validate(c), std::invalid_argument);
+  EXPECT_NE(c.validate().find("wheel_radius"), std::string::npos) << c.validate();
+  auto port = wheelchair_can::FakeBus::create()->connect("driver");
+  EXPECT_THROW(BaseDriverCore(c, *port), std::invalid_argument);
   c = test::testDriverConfig();
   c.max_torque = 400;
-  EXPECT_THROW(validate(c), std::invalid_argument);
-  EXPECT_NO_THROW(validate(test::testDriverConfig()));
+  EXPECT_NE(c.validate().find("max_torque exceeds"), std::string::npos) << c.validate();
+  EXPECT_THROW(BaseDriverCore(c, *port), std::invalid_argument);
+  EXPECT_EQ(test::testDriverConfig().validate(), "");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // Prints a JSON array (bench/controller/run). Usage: controller_bench [chair.yaml]
 #include <wheelchair_controller_test/closed_loop_simulation.h>
 #include <wheelchair_controller_test/test_paths.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <algorithm>
 #include <chrono>
@@ -49,7 +50,7 @@ double stddev(const std::vector<double>& v) {
 
 int main(int argc, char** argv) {
   const ChairParams model = wheelchair_description::loadChairParams(
-      argc > 1 ? argv[1] : wheelchair_description::defaultChairParamsPath());
+      argc > 1 ? argv[1] : wheelchair_description::test::chairFile());
   std::vector<Row> rows;
   std::vector<double> step_times;
   for (const bool dynamic : {true, false}) {

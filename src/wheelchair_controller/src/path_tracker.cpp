@@ -64,7 +64,8 @@ PathTracker::PathTracker(const ChairParams& chair, const TrackerConfig& config)
       config_(config),
       gains_(gainsFromNaturalFrequency(config.natural_frequency, config.damping)),
       stop_(chair, config.stop) {
-  wd::validate(chair_);
+  const std::string problem = chair_.validate();
+  if (!problem.empty()) throw std::invalid_argument(problem);
 }
 
 PreparedPath preparePath(const std::vector<Pose2D>& path, const ChairParams& chair,

@@ -2,6 +2,7 @@
 // 1 kHz, the controller at 50 Hz (its internal model discretized with RK2, as in the paper).
 #include <wheelchair_controller_test/closed_loop_simulation.h>
 #include <wheelchair_controller_test/test_paths.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 
@@ -15,7 +16,7 @@ namespace wd = wheelchair_description;
 
 namespace {
 
-wd::ChairParams chair() { return wd::loadChairParams(wd::defaultChairParamsPath()); }
+wd::ChairParams chair() { return wd::test::shippedChair(); }
 
 /// The plant differs from the controller's model: heavier rider (+15 kg), +15 % inertia,
 /// rolling resistance, 16384-tick encoders; optional pose noise held at 5 Hz.

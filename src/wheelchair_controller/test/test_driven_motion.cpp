@@ -6,6 +6,7 @@
 #include <wheelchair_controller_test/closed_loop_simulation.h>
 #include <wheelchair_controller_test/test_paths.h>
 #include <wheelchair_core/polygon.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 
@@ -18,7 +19,7 @@ using wheelchair_core::Pose2D;
 
 namespace {
 
-wd::ChairParams chair() { return wd::loadChairParams(wd::defaultChairParamsPath()); }
+wd::ChairParams chair() { return wd::test::shippedChair(); }
 
 wc::PlantConfig mismatchedPlant() {
   wc::PlantConfig plant;

@@ -3,6 +3,7 @@
 #include <wheelchair_controller/path_tracker.h>
 #include <wheelchair_controller_test/axle_pose.h>
 #include <wheelchair_controller_test/test_paths.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 
@@ -25,7 +26,7 @@ struct FaultRun {
 /// tracker (return nullopt for none) or call tracker methods.
 FaultRun run(const std::function<std::optional<wc::PoseMeasurement>(
                  wc::PathTracker&, double t, const wc::PoseMeasurement& truth)>& inject) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
   tracker.setPath(wc::PathBuilder({0.0, 0.0, 0.0}).straight(6.0).poses());
   wd::State x = wd::stateAtAxlePose(0.0, 0.0, 0.0, p);
@@ -133,7 +134,7 @@ TEST(Faults, NonFinitePoseStops) {
 }
 
 TEST(Faults, IdleTrackerHoldsTheBrake) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
   const wc::TrackerOutput out =
       tracker.update(0.0, wc::PoseMeasurement{0.0, {0, 0, 0}}, {0.0, {0.0, 0.0}});
@@ -165,7 +166,7 @@ TEST(Faults, UserStopStops) {
 }
 
 TEST(Faults, ReleasedHoldResumesOnlyWithANewPath) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
   const std::vector<wc::Pose2D> path = wc::PathBuilder({0.0, 0.0, 0.0}).straight(2.0).poses();
   const wc::PoseMeasurement pose{0.0, {0, 0, 0}};
@@ -187,7 +188,7 @@ TEST(Faults, ReleasedHoldResumesOnlyWithANewPath) {
 // A goal given while localization is lost (e.g. before the first scan after a carer's
 // re-initialization) must not vanish silently: the status the rider sees says it was ignored.
 TEST(Faults, PathDuringAHoldIsRefusedOnTheStatus) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
   tracker.hold("localization", "localization lost: waiting for the first scan");
   double t = 0.0;
@@ -206,7 +207,7 @@ TEST(Faults, PathDuringAHoldIsRefusedOnTheStatus) {
 }
 
 TEST(Faults, PathPreparedElsewhereIsSwappedInByTheNextStep) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
   const wc::PreparedPath prepared = wc::preparePath(
       wc::PathBuilder({0.0, 0.0, 0.0}).straight(2.0).poses(), p, tracker.config(), 0.0);
@@ -221,7 +222,7 @@ TEST(Faults, PathPreparedElsewhereIsSwappedInByTheNextStep) {
 // Reaching the goal ends the path; it is no stop: a path that came in the final moments (the
 // rider's next goal, its reference still being built) must not be dropped as after a stop.
 TEST(Faults, ReachingTheGoalIsNoStopThatDropsTheNextPath) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   wc::PathTracker tracker(p, wc::TrackerConfig{});
   tracker.setPath(wc::PathBuilder({0.0, 0.0, 0.0}).straight(1.0).poses());
   const uint64_t stops = tracker.stopCount();

@@ -4,6 +4,7 @@
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_core/polygon.h>
 #include <wheelchair_description/chair_params.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 
@@ -42,7 +43,7 @@ TEST(FlatPaths, FootprintStaysInFreeSpaceWithMargin) {
   const std::string world = FLAT_WORLD_YAML;
   if (!std::ifstream(world).good()) GTEST_SKIP() << "no flat world at " << world;
   const wm::OccupancyMap map = wm::loadMap(world);
-  const wd::ChairParams chair = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams chair = wd::test::shippedChair();
   ASSERT_GE(chair.footprint.size(), 3u);
   const auto paths = wc::flatTestPaths();
   ASSERT_EQ(paths.size(), 10u);

@@ -2,6 +2,7 @@
 // differences of the model and the closed form det Phi = -2 b L c^2.
 #include <wheelchair_controller/linearization.h>
 #include <wheelchair_controller/torque_saturation.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,7 @@ namespace wd = wheelchair_description;
 
 namespace {
 
-wd::ChairParams chair() { return wd::loadChairParams(wd::defaultChairParamsPath()); }
+wd::ChairParams chair() { return wd::test::shippedChair(); }
 
 wd::State someState() {
   wd::State x;

@@ -3,6 +3,7 @@
 #include <wheelchair_controller/start_offset.h>
 #include <wheelchair_controller_test/test_paths.h>
 #include <wheelchair_description/chair_params.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 
@@ -93,7 +94,7 @@ TEST(OutputTrajectory, InPlaceRotationIsBoundedAndKeepsTheAxle) {
 }
 
 TEST(StartOffset, StartsAtTheChairAndDecaysSmoothlyToTheBase) {
-  const wd::ChairParams p = wd::loadChairParams(wd::defaultChairParamsPath());
+  const wd::ChairParams p = wd::test::shippedChair();
   auto base = std::make_shared<wc::PathOutputTrajectory>(
       std::make_shared<wc::SmoothPath>(wc::PathBuilder({0.0, 0.0, 0.0}).straight(4.0).poses()),
       p.lookahead, p.cm_offset, wc::PathLimits{}, 0.7);

@@ -168,14 +168,29 @@ bool YamlParameterSource::get(const std::string& key, std::vector<std::string>& 
   return getList(impl_->find(key), where_, key, "a list of strings", value);
 }
 bool YamlParameterSource::get(const std::string& key, std::vector<Eigen::Vector2d>& value) const {
-  std::vector<std::vector<double>> pairs;
   const YAML::Node node = impl_->find(key);
-  if (!getList(node, where_, key, "a list of [x, y] pairs", pairs)) return false;
+  if (!node || node.IsNull()) return false;
+  // The message names the item that is wrong ("'footprint[2][1]' is not a number").
+  const auto wrong = [&](const std::string& item, const char* what) {
+    return ConfigError(where_ + ": parameter '" + key + "' must be a list of [x, y] pairs ('" +
+                       key + item + "' " + what + ")");
+  };
+  if (!node.IsSequence()) throw wrong("", "is not a list");
   std::vector<Eigen::Vector2d> points;
-  for (const auto& p : pairs) {
-    if (p.size() != 2)
-      throw ConfigError(where_ + ": parameter '" + key + "' must be a list of [x, y] pairs");
-    points.emplace_back(p[0], p[1]);
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const YAML::Node pair = node[i];
+    const std::string item = "[" + std::to_string(i) + "]";
+    if (!pair.IsSequence() || pair.size() != 2) throw wrong(item, "is not an [x, y] pair");
+    Eigen::Vector2d p;
+    for (int c = 0; c < 2; ++c) {
+      try {
+        if (!pair[c].IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "not a scalar");
+        p[c] = pair[c].as<double>();
+      } catch (const YAML::Exception&) {
+        throw wrong(item + "[" + std::to_string(c) + "]", "is not a number");
+      }
+    }
+    points.push_back(p);
   }
   value = points;
   return true;

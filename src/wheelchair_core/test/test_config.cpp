@@ -71,6 +71,11 @@ TEST(Config, AnInvalidValueIsRefusedWithTheReason) {
 TEST(Config, AValueOfTheWrongTypeIsRefused) {
   EXPECT_NE(errorOf("enabled: maybe").find("'enabled' must be true or false"), std::string::npos);
   EXPECT_NE(errorOf("footprint: [[1, 2, 3]]").find("[x, y] pairs"), std::string::npos);
+  // The item that is wrong is named.
+  EXPECT_NE(errorOf("footprint: [[1, 2], [0, a]]").find("'footprint[1][1]' is not a number"),
+            std::string::npos);
+  EXPECT_NE(errorOf("footprint: [[1, 2], [3]]").find("'footprint[1]' is not an [x, y] pair"),
+            std::string::npos);
   EXPECT_NE(errorOf("timeout: [1, 2]").find("must be a number"), std::string::npos);
 }
 

@@ -1,144 +1,98 @@
+#include <wheelchair_core/config.h>
 #include <wheelchair_description/chair_params.h>
-
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <fstream>
-#include <stdexcept>
-#include <utility>
+#include <iomanip>
+#include <sstream>
 
 namespace wheelchair_description {
 namespace {
 
-/// The number at root[key]; `name` is how the message calls it (e.g. "laser.x").
-template <typename Key>
-double requireNumber(const YAML::Node& root, const Key& key, const std::string& name,
-                     const std::string& file) {
-  const YAML::Node node = root[key];
-  if (!node) throw std::runtime_error(file + ": missing parameter '" + name + "'");
-  try {
-    return node.as<double>();
-  } catch (const YAML::Exception&) {
-    throw std::runtime_error(file + ": parameter '" + name + "' is not a number");
-  }
+using wheelchair_core::ConfigError;
+
+std::string number(double value) {
+  std::ostringstream os;
+  os << std::setprecision(6) << value;
+  return os.str();
 }
 
-double requireNumber(const YAML::Node& root, const std::string& key, const std::string& file) {
-  return requireNumber(root, key, key, file);
-}
+std::string named(const char* name) { return std::string("chair parameter '") + name + "'"; }
 
-/// footprint: a sequence of [x, y] pairs.
-std::vector<Eigen::Vector2d> requireFootprint(const YAML::Node& root, const std::string& file) {
-  const YAML::Node node = root["footprint"];
-  if (!node) throw std::runtime_error(file + ": missing parameter 'footprint'");
-  if (!node.IsSequence())
-    throw std::runtime_error(file + ": parameter 'footprint' is not a list of [x, y] points");
-  std::vector<Eigen::Vector2d> footprint;
-  for (std::size_t i = 0; i < node.size(); ++i) {
-    const YAML::Node vertex = node[i];
-    const std::string name = "footprint[" + std::to_string(i) + "]";
-    if (!vertex.IsSequence() || vertex.size() != 2)
-      throw std::runtime_error(file + ": parameter '" + name + "' is not an [x, y] point");
-    footprint.emplace_back(requireNumber(vertex, 0, name + "[0]", file),
-                           requireNumber(vertex, 1, name + "[1]", file));
-  }
-  return footprint;
-}
-
-void requirePositive(double value, const char* name) {
-  if (!std::isfinite(value) || value <= 0.0)
-    throw std::invalid_argument(std::string("chair parameter '") + name +
-                                "' must be finite and positive (got " + std::to_string(value) +
-                                ")");
-}
-
-void requireFinite(double value, const char* name) {
-  if (!std::isfinite(value))
-    throw std::invalid_argument(std::string("chair parameter '") + name + "' is not finite");
+/// Throws ConfigError unless the source holds some key of the group `name` ("laser/x"...).
+void requireGroup(const wheelchair_core::ConfigReader& reader, const std::string& name,
+                  const std::string& members) {
+  for (const std::string& key : reader.source().keys())
+    if (key.compare(0, name.size() + 1, name + "/") == 0) return;
+  throw ConfigError(reader.source().where() + ": missing parameter '" + name + "' " + members);
 }
 
 }  // namespace
 
-double ChairParams::circumscribedRadius() const {
-  double radius = 0.0;
-  for (const auto& vertex : footprint) radius = std::max(radius, vertex.norm());
-  return radius;
+std::string ChairParams::validate() const {
+  wheelchair_core::ConfigChecks checks;
+  const std::pair<double, const char*> positive[] = {{total_mass, "total_mass"},
+                                                     {wheel_mass, "wheel_mass"},
+                                                     {wheel_inertia, "wheel_inertia"},
+                                                     {wheel_inertia_diam, "wheel_inertia_diam"},
+                                                     {body_inertia, "body_inertia"},
+                                                     {wheel_radius, "wheel_radius"},
+                                                     {half_track, "half_track"},
+                                                     {max_wheel_torque, "max_wheel_torque"},
+                                                     {max_speed, "max_speed"},
+                                                     {width, "width"},
+                                                     {length, "length"}};
+  for (const auto& [value, name] : positive)
+    checks.check(std::isfinite(value) && value > 0.0,
+                 named(name) + " must be finite and positive (got " + number(value) + ")");
+  checks.check(std::isfinite(cm_offset), named("cm_offset") + " is not finite");
+  checks.check(std::isfinite(lookahead) && lookahead != 0.0,
+               named("lookahead") + " must be finite and non-zero (eq. 19)");
+  checks.check(std::isfinite(rolling_resistance) && rolling_resistance >= 0.0,
+               named("rolling_resistance") + " must be >= 0");
+  const std::string polygon = wheelchair_core::polygonProblem(footprint);
+  checks.check(polygon.empty(), named("footprint") + ": " + polygon);
+  const std::pair<double, const char*> mount[] = {
+      {laser_x, "laser/x"}, {laser_y, "laser/y"}, {laser_z, "laser/z"}, {laser_yaw, "laser/yaw"}};
+  for (const auto& [value, name] : mount)
+    checks.check(std::isfinite(value), named(name) + " is not finite");
+  return checks.result();
 }
 
-void validate(const ChairParams& p) {
-  const std::pair<double, const char*> positive[] = {{p.total_mass, "total_mass"},
-                                                     {p.wheel_mass, "wheel_mass"},
-                                                     {p.wheel_inertia, "wheel_inertia"},
-                                                     {p.wheel_inertia_diam, "wheel_inertia_diam"},
-                                                     {p.body_inertia, "body_inertia"},
-                                                     {p.wheel_radius, "wheel_radius"},
-                                                     {p.half_track, "half_track"},
-                                                     {p.max_wheel_torque, "max_wheel_torque"},
-                                                     {p.max_speed, "max_speed"},
-                                                     {p.width, "width"},
-                                                     {p.length, "length"}};
-  for (const auto& [value, name] : positive) requirePositive(value, name);
-  requireFinite(p.cm_offset, "cm_offset");
-  if (!std::isfinite(p.lookahead) || p.lookahead == 0.0)
-    throw std::invalid_argument("chair parameter 'lookahead' must be finite and non-zero (eq. 19)");
-  if (!std::isfinite(p.rolling_resistance) || p.rolling_resistance < 0.0)
-    throw std::invalid_argument("chair parameter 'rolling_resistance' must be >= 0");
-  if (p.footprint.size() < 3)
-    throw std::invalid_argument("chair parameter 'footprint' needs >= 3 vertices");
-  for (const auto& v : p.footprint)
-    if (!v.allFinite())
-      throw std::invalid_argument("chair parameter 'footprint' has a non-finite vertex");
-  requireFinite(p.laser_x, "laser.x");
-  requireFinite(p.laser_y, "laser.y");
-  requireFinite(p.laser_z, "laser.z");
-  requireFinite(p.laser_yaw, "laser.yaw");
+void readChairParams(wheelchair_core::ConfigReader& reader, ChairParams& p) {
+  reader.require("total_mass", p.total_mass);
+  reader.require("wheel_mass", p.wheel_mass);
+  reader.require("wheel_inertia", p.wheel_inertia);
+  reader.require("wheel_inertia_diam", p.wheel_inertia_diam);
+  reader.require("body_inertia", p.body_inertia);
+  reader.require("wheel_radius", p.wheel_radius);
+  reader.require("half_track", p.half_track);
+  reader.require("cm_offset", p.cm_offset);
+  reader.require("lookahead", p.lookahead);
+  reader.require("max_wheel_torque", p.max_wheel_torque);
+  reader.require("max_speed", p.max_speed);
+  reader.require("rolling_resistance", p.rolling_resistance);
+  reader.require("width", p.width);
+  reader.require("length", p.length);
+  reader.require("footprint", p.footprint);
+  requireGroup(reader, "laser", "{x, y, z, yaw}");
+  reader.require("laser/x", p.laser_x);
+  reader.require("laser/y", p.laser_y);
+  reader.require("laser/z", p.laser_z);
+  reader.require("laser/yaw", p.laser_yaw);
 }
 
 ChairParams loadChairParams(const std::string& yaml_path) {
-  if (!std::ifstream(yaml_path)) throw std::runtime_error(yaml_path + ": cannot open chair file");
+  if (!std::ifstream(yaml_path)) throw ConfigError(yaml_path + ": cannot open chair file");
   YAML::Node root;
   try {
     root = YAML::LoadFile(yaml_path);
   } catch (const YAML::Exception& e) {
-    throw std::runtime_error(yaml_path + ": bad YAML: " + e.what());
+    throw ConfigError(yaml_path + ": bad YAML: " + e.what());
   }
-  ChairParams p;
-  p.total_mass = requireNumber(root, "total_mass", yaml_path);
-  p.wheel_mass = requireNumber(root, "wheel_mass", yaml_path);
-  p.wheel_inertia = requireNumber(root, "wheel_inertia", yaml_path);
-  p.wheel_inertia_diam = requireNumber(root, "wheel_inertia_diam", yaml_path);
-  p.body_inertia = requireNumber(root, "body_inertia", yaml_path);
-  p.wheel_radius = requireNumber(root, "wheel_radius", yaml_path);
-  p.half_track = requireNumber(root, "half_track", yaml_path);
-  p.cm_offset = requireNumber(root, "cm_offset", yaml_path);
-  p.lookahead = requireNumber(root, "lookahead", yaml_path);
-  p.max_wheel_torque = requireNumber(root, "max_wheel_torque", yaml_path);
-  p.max_speed = requireNumber(root, "max_speed", yaml_path);
-  p.rolling_resistance = requireNumber(root, "rolling_resistance", yaml_path);
-  p.width = requireNumber(root, "width", yaml_path);
-  p.length = requireNumber(root, "length", yaml_path);
-  p.footprint = requireFootprint(root, yaml_path);
-  const YAML::Node laser = root["laser"];
-  if (!laser || !laser.IsMap())
-    throw std::runtime_error(yaml_path + ": missing parameter 'laser' {x, y, z, yaw}");
-  p.laser_x = requireNumber(laser, "x", "laser.x", yaml_path);
-  p.laser_y = requireNumber(laser, "y", "laser.y", yaml_path);
-  p.laser_z = requireNumber(laser, "z", "laser.z", yaml_path);
-  p.laser_yaw = requireNumber(laser, "yaw", "laser.yaw", yaml_path);
-  try {
-    validate(p);
-  } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(yaml_path + ": " + e.what());
-  }
-  return p;
-}
-
-std::string defaultChairParamsPath() {
-  for (const char* dir : {WHEELCHAIR_DESCRIPTION_INSTALL_DIR, WHEELCHAIR_DESCRIPTION_SOURCE_DIR}) {
-    const std::string path = std::string(dir) + "/config/chair.yaml";
-    if (std::ifstream(path)) return path;
-  }
-  return std::string(WHEELCHAIR_DESCRIPTION_SOURCE_DIR) + "/config/chair.yaml";
+  return wheelchair_core::loadConfig<ChairParams>(
+      wheelchair_core::YamlParameterSource(root, yaml_path), readChairParams);
 }
 
 }  // namespace wheelchair_description

@@ -1,9 +1,10 @@
 // The chair's robot model: /robot_description from the chair file, fixed joints on /tf_static,
 // wheel joints from /joint_states on /tf (angle zero until the first message) at most at
 // ~publish_frequency.
-#include <wheelchair_description/chair_params.h>
-#include <wheelchair_description/package_paths.h>
+#include <wheelchair_core/config.h>
+#include <wheelchair_description/chair_file.h>
 #include <wheelchair_description/urdf_generator.h>
+#include <wheelchair_ros/parameters.h>
 
 #include "urdf_transforms.h"
 
@@ -20,15 +21,37 @@
 
 namespace wheelchair_description {
 
+namespace {
+
+/// The publisher's private parameters.
+struct PublisherSettings {
+  std::string chair_file;           ///< "" = wheelchair_description's own (defaultChairFile)
+  double publish_frequency = 20.0;  ///< [Hz] most wheel transforms per second; 0 = no timer
+  std::string validate() const {
+    return wheelchair_core::ConfigChecks()
+        .nonNegative("publish_frequency", publish_frequency)
+        .result();
+  }
+};
+
+void readPublisherSettings(wheelchair_core::ConfigReader& reader, PublisherSettings& s) {
+  reader.renamed("chair_params", "chair_file");
+  reader.read("chair_file", s.chair_file);
+  reader.read("publish_frequency", s.publish_frequency);
+}
+
+}  // namespace
+
 class DescriptionPublisherNodelet : public nodelet::Nodelet {
  private:
   void onInit() override {
     ros::NodeHandle& nh = getNodeHandle();
     ros::NodeHandle& pnh = getPrivateNodeHandle();
-    const std::string chair_file = pnh.param<std::string>("chair_file", chairParamsPathFromRos());
-    const double frequency = pnh.param("publish_frequency", 20.0);
-    std::string urdf;
+    const auto settings =
+        wheelchair_ros::loadParameters<PublisherSettings>(pnh, readPublisherSettings);
+    std::string chair_file, urdf;
     try {
+      chair_file = resolveChairFile(settings.chair_file);
       urdf = chairUrdf(loadChairParams(chair_file));
     } catch (const std::exception& e) {
       NODELET_FATAL("%s", e.what());
@@ -43,8 +66,8 @@ class DescriptionPublisherNodelet : public nodelet::Nodelet {
     static_broadcaster_->sendTransform(fixedJointTransforms(model_, ros::Time::now()));
     joint_sub_ =
         nh.subscribe("joint_states", 10, &DescriptionPublisherNodelet::onJointStates, this);
-    if (frequency > 0.0 && std::isfinite(frequency)) {
-      period_ = ros::Duration(1.0 / frequency);
+    if (settings.publish_frequency > 0.0) {
+      period_ = ros::Duration(1.0 / settings.publish_frequency);
       timer_ = nh.createTimer(period_, &DescriptionPublisherNodelet::onTimer, this);
     }
     NODELET_INFO("robot_description from %s; %zu moving joints", chair_file.c_str(),

@@ -136,14 +136,16 @@ double kineticEnergy(const State& x, const ChairParams& p) {
   return 0.5 * eta.dot(dynamicsF1(configuration(x), p) * eta);
 }
 
+// Eq. 10-11 at P: wheelchair_core's, in the model's [right, left] vectors.
 Eigen::Vector2d bodyVelocity(const Eigen::Vector2d& eta, const ChairParams& p) {
-  const double r = p.wheel_radius;
-  return {0.5 * r * (eta(0) + eta(1)), 0.5 * r * (eta(0) - eta(1)) / p.half_track};
+  const wheelchair_core::BodyTwist twist =
+      wheelchair_core::bodyTwist({eta(0), eta(1)}, p.wheelBase());
+  return {twist.v, twist.omega};
 }
 
 Eigen::Vector2d wheelSpeeds(double v, double omega, const ChairParams& p) {
-  const double bw = p.half_track * omega;
-  return {(v + bw) / p.wheel_radius, (v - bw) / p.wheel_radius};
+  const wheelchair_core::WheelRates rates = wheelchair_core::wheelRates({v, omega}, p.wheelBase());
+  return {rates.right, rates.left};
 }
 
 Eigen::Vector3d axlePose(const State& x, const ChairParams& p) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace wheelchair_description {
 namespace {
@@ -87,7 +88,8 @@ std::string wheelLink(const std::string& name, double radius, double width,
 }  // namespace
 
 std::string chairUrdf(const ChairParams& p) {
-  validate(p);
+  const std::string problem = p.validate();
+  if (!problem.empty()) throw std::invalid_argument(problem);
   const double r = p.wheel_radius, b = p.half_track, d = p.cm_offset;
   double front = p.footprint.front().x(), rear = front;
   for (const auto& v : p.footprint) {

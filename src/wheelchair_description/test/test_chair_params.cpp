@@ -1,5 +1,6 @@
 // Loading the chair file: every fault names the file and the parameter.
 #include <wheelchair_description/chair_params.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 
@@ -16,7 +17,7 @@ namespace {
 
 /// Lines of the shipped chair file (the test edits copies of them).
 std::vector<std::string> defaultLines() {
-  std::ifstream in(defaultChairParamsPath());
+  std::ifstream in(test::chairFile());
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   return lines;
@@ -79,8 +80,8 @@ const char* const kPositiveKeys[] = {
 }  // namespace
 
 TEST(ChairParams, ShippedFileLoadsAndValidates) {
-  const ChairParams p = loadChairParams(defaultChairParamsPath());
-  EXPECT_NO_THROW(validate(p));
+  const ChairParams p = test::shippedChair();
+  EXPECT_EQ(p.validate(), "");
   EXPECT_EQ(p.footprint.size(), 4u);
 }
 
@@ -138,7 +139,7 @@ TEST(ChairParams, EachMissingKeyIsNamed) {
   for (const char* key : kScalarKeys) expectErrorNaming(chairFileWith(key, ""), key);
   expectErrorNaming(chairFileWith("footprint", ""), "footprint");
   expectErrorNaming(chairFileWith("laser", ""), "laser");
-  expectErrorNaming(chairFileWith("laser", "laser: {x: 0.28, y: 0.0, yaw: 0.0}"), "laser.z");
+  expectErrorNaming(chairFileWith("laser", "laser: {x: 0.28, y: 0.0, yaw: 0.0}"), "laser/z");
 }
 
 TEST(ChairParams, EachNonFiniteValueIsNamed) {
@@ -146,9 +147,9 @@ TEST(ChairParams, EachNonFiniteValueIsNamed) {
     for (const char* bad : {".nan", ".inf", "-.inf"})
       expectErrorNaming(chairFileWith(key, std::string(key) + ": " + bad), key);
   expectErrorNaming(chairFileWith("laser", "laser: {x: .nan, y: 0.0, z: 0.25, yaw: 0.0}"),
-                    "laser.x");
+                    "laser/x");
   expectErrorNaming(chairFileWith("laser", "laser: {x: 0.2, y: 0.0, z: 0.25, yaw: .inf}"),
-                    "laser.yaw");
+                    "laser/yaw");
   expectErrorNaming(chairFileWith("footprint", "footprint: [[0.3, .nan], [-0.8, 0.3], [0, -1]]"),
                     "footprint");
 }
@@ -183,12 +184,17 @@ TEST(ChairParams, FootprintNeedsThreeVertices) {
 }
 
 TEST(ChairParams, ValidateNamesTheBadMember) {
-  ChairParams p = loadChairParams(defaultChairParamsPath());
+  ChairParams p = test::shippedChair();
   p.half_track = -0.2;
-  try {
-    validate(p);
-    FAIL() << "negative half_track accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("'half_track'"), std::string::npos) << e.what();
-  }
+  const std::string problem = p.validate();
+  EXPECT_NE(problem.find("'half_track'"), std::string::npos)
+      << "negative half_track accepted: " << problem;
+}
+
+TEST(ChairParams, AnUnknownKeyIsRefusedNamingItAndTheKnownKeys) {
+  const std::string path = chairFileWith("length", "length: 1.10\nlenght: 1.10");
+  const std::string message = loadError(path);
+  EXPECT_NE(message.find(path), std::string::npos) << message;
+  EXPECT_NE(message.find("unknown parameter 'lenght'"), std::string::npos) << message;
+  EXPECT_NE(message.find("laser/yaw"), std::string::npos) << "the known keys: " << message;
 }

@@ -1,14 +1,14 @@
 // rostest: what description_publisher puts on the parameter server and on tf.
 #include <wheelchair_description/chair_params.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
-#include <tf2/LinearMath/Matrix3x3.h>
-#include <tf2/LinearMath/Quaternion.h>
 #include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/transform_listener.h>
 #include <urdf/model.h>
+#include <wheelchair_ros/conversions.h>
 
 #include <atomic>
 #include <cmath>
@@ -20,12 +20,6 @@ namespace {
 geometry_msgs::TransformStamped waitForTransform(tf2_ros::Buffer& buffer, const std::string& parent,
                                                  const std::string& child) {
   return buffer.lookupTransform(parent, child, ros::Time(0), ros::Duration(15.0));
-}
-
-double yawOf(const geometry_msgs::Quaternion& q) {
-  double roll, pitch, yaw;
-  tf2::Matrix3x3(tf2::Quaternion(q.x, q.y, q.z, q.w)).getRPY(roll, pitch, yaw);
-  return yaw;
 }
 
 }  // namespace
@@ -43,14 +37,14 @@ TEST(DescriptionPublisher, RobotDescriptionIsSetAndParses) {
 }
 
 TEST(DescriptionPublisher, LaserMountArrivesOnTf) {
-  const ChairParams p = loadChairParams(defaultChairParamsPath());
+  const ChairParams p = test::shippedChair();
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
   const auto laser = waitForTransform(buffer, "base_link", "laser");
   EXPECT_NEAR(laser.transform.translation.x, p.laser_x, 1e-9);
   EXPECT_NEAR(laser.transform.translation.y, p.laser_y, 1e-9);
   EXPECT_NEAR(laser.transform.translation.z, p.laser_z, 1e-9);
-  EXPECT_NEAR(yawOf(laser.transform.rotation), p.laser_yaw, 1e-9);
+  EXPECT_NEAR(wheelchair_ros::yawOf(laser.transform.rotation), p.laser_yaw, 1e-9);
   const auto base = waitForTransform(buffer, "base_footprint", "base_link");
   EXPECT_NEAR(base.transform.translation.z, p.wheel_radius, 1e-9);
   // The whole chair, floor to sensor, in one tree.
@@ -59,7 +53,7 @@ TEST(DescriptionPublisher, LaserMountArrivesOnTf) {
 }
 
 TEST(DescriptionPublisher, WheelsStartAtZeroAndFollowJointStates) {
-  const ChairParams p = loadChairParams(defaultChairParamsPath());
+  const ChairParams p = test::shippedChair();
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
   const auto at_rest = waitForTransform(buffer, "base_link", "left_wheel");

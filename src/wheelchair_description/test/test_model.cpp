@@ -1,6 +1,7 @@
 // The model (eqs. 4-15) against the physics it must obey.
 #include <wheelchair_description/chair_params.h>
 #include <wheelchair_description/model.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 #include <Eigen/Cholesky>
@@ -13,7 +14,7 @@ using namespace wheelchair_description;
 
 namespace {
 
-ChairParams chair() { return loadChairParams(defaultChairParamsPath()); }
+ChairParams chair() { return test::shippedChair(); }
 
 }  // namespace
 

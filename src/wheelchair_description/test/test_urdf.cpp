@@ -2,6 +2,7 @@
 // liburdf and agrees with the chair file.
 #include <wheelchair_description/chair_params.h>
 #include <wheelchair_description/urdf_generator.h>
+#include <wheelchair_description_testing/chair_file.h>
 
 #include <gtest/gtest.h>
 #include <urdf/model.h>
@@ -112,7 +113,7 @@ void expectModelMatchesChair(const urdf::Model& model, const ChairParams& p) {
 }  // namespace
 
 TEST(Urdf, CommittedFileMatchesTheChairFile) {
-  const ChairParams p = loadChairParams(defaultChairParamsPath());
+  const ChairParams p = test::shippedChair();
   const std::string committed = readFile(kCommittedUrdf);
   ASSERT_FALSE(committed.empty()) << kCommittedUrdf << " is missing";
   expectModelMatchesChair(parse(committed), p);
@@ -127,7 +128,7 @@ TEST(Urdf, GeneratedModelFollowsOtherChairs) {
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(0.8, 1.2);
   for (int i = 0; i < 20; ++i) {
-    ChairParams p = loadChairParams(defaultChairParamsPath());
+    ChairParams p = test::shippedChair();
     p.wheel_radius *= u(rng);
     p.half_track *= u(rng);
     p.cm_offset *= u(rng);
@@ -153,7 +154,7 @@ TEST(Urdf, AllLinksHangFromBaseFootprint) {
 }
 
 TEST(Urdf, InvalidChairIsRejected) {
-  ChairParams p = loadChairParams(defaultChairParamsPath());
+  ChairParams p = test::shippedChair();
   p.wheel_radius = std::nan("");
   EXPECT_THROW(chairUrdf(p), std::invalid_argument);
 }

@@ -1,4 +1,4 @@
-// generate_urdf [chair.yaml] [out.urdf]: writes the chair's URDF (stdout without out.urdf).
+// generate_urdf CHAIR.yaml [OUT.urdf]: writes the chair's URDF (stdout without OUT.urdf).
 #include <wheelchair_description/urdf_generator.h>
 
 #include <fstream>
@@ -7,9 +7,12 @@
 
 int main(int argc, char** argv) {
   using namespace wheelchair_description;
+  if (argc < 2 || argc > 3) {
+    std::cerr << "usage: generate_urdf CHAIR.yaml [OUT.urdf]\n";
+    return 2;
+  }
   try {
-    const std::string chair = argc > 1 ? argv[1] : defaultChairParamsPath();
-    const std::string urdf = chairUrdf(loadChairParams(chair));
+    const std::string urdf = chairUrdf(loadChairParams(argv[1]));
     if (argc < 3) {
       std::cout << urdf;
       return 0;

@@ -5,6 +5,7 @@
 // planner host loads it.
 #include <wheelchair_core/config.h>
 #include <wheelchair_core/map_io.h>
+#include <wheelchair_description_testing/chair_file.h>
 #include <wheelchair_harmonic_planner/harmonic_planner.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 #include <wheelchair_planner/path_metrics.h>
@@ -300,8 +301,7 @@ int main(int argc, char** argv) {
                   goal);
   }
   // The chair of chair.yaml: its footprint, its half width (0.31 m) as the inscribed radius.
-  const PlannerSettings settings = plannerSettings(
-      wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath()));
+  const PlannerSettings settings = plannerSettings(wheelchair_description::test::shippedChair());
   const double cspace_cpu0 = cpuSeconds();
   const ConfigSpace cs(map, settings.cspace);
   emit("harmonic", "cspace_cpu_time", (cpuSeconds() - cspace_cpu0) * 1e3, "ms");

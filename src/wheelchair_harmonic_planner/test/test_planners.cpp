@@ -1,6 +1,7 @@
 // The harmonic planner plugin used directly (no ROS): the flat's 80 cm doorways, clearance where
 // space allows, the map prepared on arrival, failures with reasons, its own keys.
 #include <wheelchair_core/map_io.h>
+#include <wheelchair_description_testing/chair_file.h>
 #include <wheelchair_harmonic_planner/harmonic_planner.h>
 #include <wheelchair_planner/path_metrics.h>
 #include <wheelchair_planner_test/maze.h>
@@ -23,8 +24,7 @@ double distanceTo(const Pose2D& p, double x, double y) { return std::hypot(p.x -
 
 /// The settings the host gives for the chair of wheelchair_description's chair.yaml.
 PlannerSettings chairSettings() {
-  return wheelchair_planner::plannerSettings(
-      wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath()));
+  return wheelchair_planner::plannerSettings(wheelchair_description::test::shippedChair());
 }
 
 HarmonicPlannerConfig lazy() {

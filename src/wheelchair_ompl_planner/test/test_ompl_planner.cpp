@@ -1,5 +1,6 @@
 // The OMPL planner plugin used directly (no ROS): its plans pass the same footprint gate, every
 // OMPL algorithm finds a collision-free path through a maze, failures with reasons, its keys.
+#include <wheelchair_description_testing/chair_file.h>
 #include <wheelchair_ompl_planner/ompl_planner.h>
 #include <wheelchair_planner/path_metrics.h>
 #include <wheelchair_planner_test/footprint_worlds.h>
@@ -89,9 +90,8 @@ TEST(OmplPlanner, FailsClearlyForBadStartsAndGoals) {
   OmplPlanner planner;
   OmplPlannerConfig config;
   config.time_limit = 0.2;
-  planner.configure(wheelchair_planner::plannerSettings(wheelchair_description::loadChairParams(
-                        wheelchair_description::defaultChairParamsPath())),
-                    config);
+  planner.configure(
+      wheelchair_planner::plannerSettings(wheelchair_description::test::shippedChair()), config);
   wheelchair_planner::expectClearFailuresForBadStartsAndGoals(planner);
 }
 

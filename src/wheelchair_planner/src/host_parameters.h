@@ -4,8 +4,8 @@
 #pragma once
 
 #include <wheelchair_core/config.h>
+#include <wheelchair_description/chair_file.h>
 #include <wheelchair_description/chair_params.h>
-#include <wheelchair_description/package_paths.h>
 #include <wheelchair_planner/global_planner.h>
 #include <wheelchair_planner/planner_settings.h>
 
@@ -19,7 +19,7 @@ struct HostParameters {
   std::string planner = "wheelchair_harmonic_planner/HarmonicPlanner";  ///< pluginlib name
   /// The chair's description (its footprint): wheelchair_description's chair.yaml, found at run
   /// time.
-  std::string chair_file = wheelchair_description::chairParamsPathFromRos();
+  std::string chair_file = wheelchair_description::defaultChairFile();
   std::string map_frame = "map";
   std::string base_frame = "base_link";
   double max_pose_age = 0.5;  ///< [s] oldest tf map -> base_link a plan may start from

@@ -3,6 +3,8 @@
 // the plugin, anything else refused; the old names refused with the new ones.
 #include "../src/host_parameters.h"
 
+#include <wheelchair_description_testing/chair_file.h>
+
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -57,7 +59,7 @@ std::string refusal(const std::string& yaml) {
   return "";
 }
 
-const std::string kChairFile = wheelchair_description::defaultChairParamsPath();
+const std::string kChairFile = wheelchair_description::test::chairFile();
 
 }  // namespace
 

@@ -1,10 +1,12 @@
 // bench/sim: simulated seconds per wall-clock second of the simulator core (dynamics at
 // physics_rate, odometry, laser at laser_rate), on the given worlds. Prints a JSON array.
 // usage: bench_sim SIM_SECONDS WORLD.yaml [WORLD.yaml ...]
+#include <wheelchair_description/chair_file.h>
+#include <wheelchair_description/model.h>
 #include <wheelchair_sim/simulated_chair.h>
 #include <wheelchair_sim/world_loader.h>
 
-#include <wheelchair_description/model.h>
+#include <ros/package.h>
 
 #include <chrono>
 #include <cmath>
@@ -33,7 +35,7 @@ bool findFreePose(SimulatedChair& sim, const mrpt::maps::COccupancyGridMap2D& g)
   for (double r = 0.0; r < 0.5 * (g.getXMax() - g.getXMin()); r += 0.25) {
     for (double a = 0.0; a < 2 * M_PI; a += 0.1) {
       const double x = cx + r * std::cos(a), y = cy + r * std::sin(a);
-      if (roomy(x, y)) return sim.reset(x, y, 0.0);
+      if (roomy(x, y)) return sim.reset({x, y, 0.0});
     }
   }
   return false;
@@ -70,9 +72,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   const double seconds = std::stod(argv[1]);
+  // The chair and sim.yaml of the packages found at run time (as the simulator node does).
   const auto chair =
-      wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath());
-  const auto params = wheelchair_sim::loadSimParams(wheelchair_sim::defaultSimParamsPath());
+      wheelchair_description::loadChairParams(wheelchair_description::defaultChairFile());
+  const auto params =
+      wheelchair_sim::loadSimParams(ros::package::getPath("wheelchair_sim") + "/config/sim.yaml");
   bool first = true;
   std::printf("[");
   for (int i = 2; i < argc; ++i) {

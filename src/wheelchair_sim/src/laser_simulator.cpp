@@ -1,4 +1,4 @@
-#include <wheelchair_sim/footprint_checker.h>
+#include <wheelchair_sim/free_threshold.h>
 #include <wheelchair_sim/laser_simulator.h>
 
 #include <cmath>
@@ -7,27 +7,31 @@
 
 namespace wheelchair_sim {
 
-LaserSimulator::LaserSimulator(const SimParams& params, const Eigen::Vector3d& mount,
+namespace core = wheelchair_core;
+
+LaserSimulator::LaserSimulator(const SimParams& params, const core::Pose2D& mount,
                                std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> world)
     : params_(params),
       mount_(mount),
       world_(std::move(world)),
       rng_(static_cast<uint64_t>(params.seed) + 0x9E3779B97F4A7C15ull) {
-  validate(params_);
+  const std::string problem = params_.validate();
+  if (!problem.empty()) throw std::invalid_argument("laser: " + problem);
   if (!world_) throw std::invalid_argument("LaserSimulator needs a world grid");
 }
 
-Eigen::Vector3d LaserSimulator::laserPose(const Eigen::Vector3d& base) const {
-  const double c = std::cos(base.z()), s = std::sin(base.z());
-  return {base.x() + c * mount_.x() - s * mount_.y(), base.y() + s * mount_.x() + c * mount_.y(),
-          base.z() + mount_.z()};
+core::Pose2D LaserSimulator::laserPose(const core::Pose2D& base) const {
+  const Eigen::Vector2d at = core::transformPoint(base, mount_.position());
+  return {at.x(), at.y(), base.yaw + mount_.yaw};
 }
 
-Scan LaserSimulator::scan(const Eigen::Vector3d& base_pose, const std::vector<Disc>& discs) {
-  const Eigen::Vector3d sensor = laserPose(base_pose);
-  Scan out;
+core::LaserScan2D LaserSimulator::scan(const core::Pose2D& base_pose,
+                                       const std::vector<Disc>& discs) {
+  const core::Pose2D sensor = laserPose(base_pose);
+  core::LaserScan2D out;
   out.angle_min = -0.5 * params_.laser_fov;
   out.angle_increment = params_.laser_fov / (params_.laser_beams - 1);
+  out.angle_max = out.angle_min + out.angle_increment * (params_.laser_beams - 1);
   out.range_min = params_.laser_range_min;
   out.range_max = params_.laser_range_max;
   out.ranges.resize(params_.laser_beams);
@@ -35,11 +39,11 @@ Scan LaserSimulator::scan(const Eigen::Vector3d& base_pose, const std::vector<Di
   for (int i = 0; i < params_.laser_beams; ++i) {
     float range = 0.0f;
     bool valid = false;
-    const double angle = sensor.z() + out.angle_min + i * out.angle_increment;
-    world_->simulateScanRay(sensor.x(), sensor.y(), angle, range, valid, params_.laser_range_max,
+    const double angle = sensor.yaw + out.angle_min + i * out.angle_increment;
+    world_->simulateScanRay(sensor.x, sensor.y, angle, range, valid, params_.laser_range_max,
                             kFreeThreshold);
     double r = range;
-    const double to_disc = rayToDiscs(sensor.head<2>(), angle, discs);
+    const double to_disc = rayToDiscs(sensor.position(), angle, discs);
     if (to_disc < (valid ? r : params_.laser_range_max)) {
       r = to_disc;
       valid = true;

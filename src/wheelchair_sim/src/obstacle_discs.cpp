@@ -1,4 +1,4 @@
-#include <wheelchair_sim/footprint_checker.h>
+#include <wheelchair_core/polygon.h>
 #include <wheelchair_sim/obstacle_discs.h>
 
 #include <algorithm>
@@ -37,26 +37,10 @@ double rayToDiscs(const Eigen::Vector2d& origin, double angle, const std::vector
   return best;
 }
 
-namespace {
-
-double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                         const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
-}  // namespace
-
-bool polygonTouchesDiscs(const std::vector<Eigen::Vector2d>& outline,
-                         const std::vector<Disc>& discs) {
+bool polygonTouchesDiscs(const wheelchair_core::Polygon& outline, const std::vector<Disc>& discs) {
   for (const Disc& d : discs) {
-    if (insidePolygon(outline, d.centre)) return true;
-    for (size_t i = 0; i < outline.size(); ++i) {
-      if (distanceToSegment(d.centre, outline[i], outline[(i + 1) % outline.size()]) <= d.radius)
-        return true;
-    }
+    if (wheelchair_core::insidePolygon(outline, d.centre)) return true;
+    if (wheelchair_core::distanceToBoundary(outline, d.centre) <= d.radius) return true;
   }
   return false;
 }

@@ -17,9 +17,10 @@ SimulatedChair::SimulatedChair(const wheelchair_description::ChairParams& chair,
       odom_schedule_(params.odom_rate),
       scan_schedule_(params.laser_rate) {
   if (world && params.laser_enabled) {
-    laser_.emplace(params, Eigen::Vector3d(chair.laser_x, chair.laser_y, chair.laser_yaw), world);
+    laser_.emplace(params, wheelchair_core::Pose2D{chair.laser_x, chair.laser_y, chair.laser_yaw},
+                   world);
   }
-  odometry_.reset(Eigen::Vector3d::Zero(), sim_.readWheels().angle);
+  odometry_.reset(wheelchair_core::Pose2D(), sim_.readWheels().angle);
 }
 
 SensorOutputs SimulatedChair::advance(double dt) {
@@ -29,16 +30,18 @@ SensorOutputs SimulatedChair::advance(double dt) {
   SensorOutputs out;
   out.collision_started = sim_.collided() && !was_collided;
   out.odometry_due = odom_schedule_.due(sim_.time());
-  if (laser_ && scan_schedule_.due(sim_.time()))
+  if (laser_ && scan_schedule_.due(sim_.time())) {
     out.scan = laser_->scan(sim_.pose(), sim_.obstacles().presentAt(sim_.time()));
+    out.scan->stamp = sim_.time();
+  }
   return out;
 }
 
-bool SimulatedChair::teleport(double x, double y, double yaw) { return sim_.teleport(x, y, yaw); }
+bool SimulatedChair::teleport(const wheelchair_core::Pose2D& pose) { return sim_.teleport(pose); }
 
-bool SimulatedChair::reset(double x, double y, double yaw) {
-  if (!sim_.teleport(x, y, yaw)) return false;
-  odometry_.reset(Eigen::Vector3d::Zero(), sim_.readWheels().angle);
+bool SimulatedChair::reset(const wheelchair_core::Pose2D& pose) {
+  if (!sim_.teleport(pose)) return false;
+  odometry_.reset(wheelchair_core::Pose2D(), sim_.readWheels().angle);
   return true;
 }
 

@@ -7,13 +7,14 @@
 namespace wheelchair_sim {
 
 namespace wd = wheelchair_description;
+namespace core = wheelchair_core;
 
 Simulator::Simulator(const wd::ChairParams& chair, const SimParams& params,
                      std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> world)
     : chair_(chair), params_(params), rng_(static_cast<uint64_t>(params.seed)) {
-  wd::validate(chair_);
-  validate(params_);
-  if (world) checker_.emplace(chair_.footprint, std::move(world));
+  for (const std::string& problem : {chair_.validate(), params_.validate()})
+    if (!problem.empty()) throw std::invalid_argument("simulator: " + problem);
+  if (world) contact_.emplace(chair_.footprint, std::move(world));
   x_ = wd::stateAtAxlePose(0.0, 0.0, 0.0, chair_);
 }
 
@@ -44,7 +45,7 @@ void Simulator::integrate(double h) {
   applied_ = wheelTorques(command_, brake_, x_.tail<2>(), chair_, params_);
   x_ = wd::integrateRK4(x_, applied_, h, chair_);
   if (params_.slip_noise > 0.0) addSlip(x_.segment<2>(wd::kPsiR) - before.segment<2>(wd::kPsiR));
-  if ((checker_ && checker_->outlineCollides(pose())) || touchesDisc(pose())) {
+  if ((contact_ && contact_->outlineTouches(pose())) || touchesDisc(pose())) {
     x_ = before;
     x_.tail<2>().setZero();
     collided_ = true;
@@ -53,7 +54,7 @@ void Simulator::integrate(double h) {
 
 // Each wheel's contact point slips by a random distance whose variance grows with the
 // distance it rolled (sigma^2 = slip_noise^2 * r |dpsi|): the body moves as if the wheel had
-// turned a little more or less than the encoder says.
+// turned a little more or less than the encoder says (eq. 10-11 of the two slips).
 void Simulator::addSlip(const Eigen::Vector2d& wheel_increment) {
   std::normal_distribution<double> normal(0.0, 1.0);
   Eigen::Vector2d slip;
@@ -61,47 +62,41 @@ void Simulator::addSlip(const Eigen::Vector2d& wheel_increment) {
     const double rolled = chair_.wheel_radius * std::abs(wheel_increment(i));
     slip(i) = params_.slip_noise * std::sqrt(rolled) * normal(rng_);
   }
-  Eigen::Vector3d p = pose();
-  const double forward = 0.5 * (slip(0) + slip(1));
-  p.z() += 0.5 * (slip(0) - slip(1)) / chair_.half_track;
-  p.x() += forward * std::cos(p.z());
-  p.y() += forward * std::sin(p.z());
-  const wd::State moved = wd::stateAtAxlePose(p.x(), p.y(), p.z(), chair_);
+  const core::Pose2D p =
+      core::integrateArc(pose(), core::bodyMotion(slip(0), slip(1), chair_.half_track));
+  const wd::State moved = wd::stateAtAxlePose(p.x, p.y, p.yaw, chair_);
   x_.head<3>() = moved.head<3>();
 }
 
-bool Simulator::teleport(double x, double y, double yaw) {
-  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw)) return false;
-  const Eigen::Vector3d target(x, y, std::remainder(yaw, 2.0 * M_PI));
+bool Simulator::teleport(const core::Pose2D& pose) {
+  if (!pose.isFinite()) return false;
+  const core::Pose2D target{pose.x, pose.y, core::normalizeAngle(pose.yaw)};
   if (collides(target)) return false;
   const Eigen::Vector2d wheels = x_.segment<2>(wd::kPsiR);
-  x_ = wd::stateAtAxlePose(target.x(), target.y(), target.z(), chair_);
+  x_ = wd::stateAtAxlePose(target.x, target.y, target.yaw, chair_);
   x_.segment<2>(wd::kPsiR) = wheels;
   collided_ = false;
   return true;
 }
 
-Eigen::Vector3d Simulator::pose() const {
-  Eigen::Vector3d p = wd::axlePose(x_, chair_);
-  p.z() = std::remainder(p.z(), 2.0 * M_PI);
-  return p;
+core::Pose2D Simulator::pose() const {
+  const Eigen::Vector3d p = wd::axlePose(x_, chair_);
+  return {p.x(), p.y(), core::normalizeAngle(p.z())};
 }
 
-Eigen::Vector2d Simulator::velocity() const { return wd::bodyVelocity(x_.tail<2>(), chair_); }
-
-bool Simulator::collides(const Eigen::Vector3d& p) const {
-  return (checker_ && checker_->collides(p)) || touchesDisc(p);
+core::BodyTwist Simulator::velocity() const {
+  return core::bodyTwist({x_(wd::kEtaR), x_(wd::kEtaL)}, chair_.wheelBase());
 }
 
-bool Simulator::touchesDisc(const Eigen::Vector3d& p) const {
+bool Simulator::collides(const core::Pose2D& p) const {
+  return (contact_ && contact_->touches(p)) || touchesDisc(p);
+}
+
+bool Simulator::touchesDisc(const core::Pose2D& p) const {
   if (obstacles_.all().empty()) return false;
   const std::vector<Disc> present = obstacles_.presentAt(time_);
   if (present.empty()) return false;
-  const double c = std::cos(p.z()), s = std::sin(p.z());
-  std::vector<Eigen::Vector2d> outline;
-  for (const Eigen::Vector2d& v : chair_.footprint)
-    outline.emplace_back(p.x() + c * v.x() - s * v.y(), p.y() + s * v.x() + c * v.y());
-  return polygonTouchesDiscs(outline, present);
+  return polygonTouchesDiscs(core::transformPolygon(chair_.footprint, p), present);
 }
 
 }  // namespace wheelchair_sim

@@ -1,29 +1,32 @@
 // ROS face of the simulator: torques in, sensors and ground truth out, and it owns /clock.
-// Torques come from /wheel_torques, or (~motor_bus = "udp") from an emulated CAN motor
+// Torques come from /wheel_torques, or (~motor_bus = "udp" | "fake") from an emulated CAN motor
 // controller that the real base driver talks to; the driver then publishes the odometry.
+#include "sim_messages.h"
+
+#include <wheelchair_can/emulated_motor_controller.h>
+#include <wheelchair_can/fake_bus.h>
+#include <wheelchair_can/udp_transport.h>
+#include <wheelchair_description/chair_file.h>
+#include <wheelchair_msgs/WheelTorques.h>
+#include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/parameters.h>
 #include <wheelchair_sim/AddObstacle.h>
 #include <wheelchair_sim/EnableLaser.h>
 #include <wheelchair_sim/SetPose.h>
 #include <wheelchair_sim/motor_plant_adapter.h>
 #include <wheelchair_sim/simulated_chair.h>
+#include <wheelchair_sim/simulator_settings.h>
 #include <wheelchair_sim/world_loader.h>
 
-#include <geometry_msgs/TransformStamped.h>
-#include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <nodelet/nodelet.h>
+#include <ros/package.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
-#include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
-#include <wheelchair_base_driver/emulated_motor_controller.h>
-#include <wheelchair_base_driver/udp_transport.h>
-#include <wheelchair_description/chair_params.h>
-#include <wheelchair_description/package_paths.h>
-#include <wheelchair_msgs/WheelTorques.h>
 #include <pluginlib/class_list_macros.hpp>
 
 #include <atomic>
@@ -34,59 +37,8 @@
 
 namespace wheelchair_sim {
 
-namespace {
-
-geometry_msgs::Quaternion yawToQuaternion(double yaw) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(0.5 * yaw);
-  q.w = std::cos(0.5 * yaw);
-  return q;
-}
-
-nav_msgs::Odometry odometryMessage(const ros::Time& stamp, const std::string& frame,
-                                   const Eigen::Vector3d& pose, const Eigen::Vector2d& vel) {
-  nav_msgs::Odometry m;
-  m.header.stamp = stamp;
-  m.header.frame_id = frame;
-  m.child_frame_id = "base_link";
-  m.pose.pose.position.x = pose.x();
-  m.pose.pose.position.y = pose.y();
-  m.pose.pose.orientation = yawToQuaternion(pose.z());
-  m.twist.twist.linear.x = vel(0);
-  m.twist.twist.angular.z = vel(1);
-  return m;
-}
-
-geometry_msgs::TransformStamped transformMessage(const ros::Time& stamp, const std::string& parent,
-                                                 const std::string& child, double x, double y,
-                                                 double z, double yaw) {
-  geometry_msgs::TransformStamped t;
-  t.header.stamp = stamp;
-  t.header.frame_id = parent;
-  t.child_frame_id = child;
-  t.transform.translation.x = x;
-  t.transform.translation.y = y;
-  t.transform.translation.z = z;
-  t.transform.rotation = yawToQuaternion(yaw);
-  return t;
-}
-
-sensor_msgs::LaserScan scanMessage(const ros::Time& stamp, const Scan& scan, double rate) {
-  sensor_msgs::LaserScan m;
-  m.header.stamp = stamp;
-  m.header.frame_id = "laser";
-  m.angle_min = scan.angle_min;
-  m.angle_max = scan.angleMax();
-  m.angle_increment = scan.angle_increment;
-  m.time_increment = 0.0;  // all beams at the stamp
-  m.scan_time = 1.0 / rate;
-  m.range_min = scan.range_min;
-  m.range_max = scan.range_max;
-  m.ranges = scan.ranges;
-  return m;
-}
-
-}  // namespace
+namespace can = wheelchair_can;
+namespace core = wheelchair_core;
 
 /// [wall s] the loop may fall behind ~speed before it stops trying to catch up.
 constexpr double kMaxLag = 0.02;
@@ -102,61 +54,37 @@ class SimulatorNodelet : public nodelet::Nodelet {
   void onInit() override {
     ros::NodeHandle& nh = getNodeHandle();
     ros::NodeHandle& pnh = getPrivateNodeHandle();
-    const std::string world_path = pnh.param<std::string>("world", "");
-    const std::string chair_path =
-        pnh.param<std::string>("chair_config", wheelchair_description::chairParamsPathFromRos());
-    const std::string sim_path = pnh.param<std::string>(
-        "sim_config", wheelchair_description::packageFile("wheelchair_sim", "config/sim.yaml",
-                                                          defaultSimParamsPath()));
-    pnh.param("speed", speed_, 1.0);
-    pnh.param("step", step_, 0.005);
-    pnh.param("torque_timeout", torque_timeout_, 0.5);
-    pnh.param("publish_odometry", publish_odometry_, true);
-    const bool publish_laser_tf = pnh.param("publish_laser_tf", false);
-    std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> world;
     try {
-      chair_ = wheelchair_description::loadChairParams(chair_path);
-      params_ = loadSimParams(sim_path);
-      forEachParam(params_, [&](const char* name, auto& value) { pnh.param(name, value, value); });
-      validate(params_);
-      if (world_path.empty()) throw std::runtime_error("parameter ~world (map YAML) is not set");
-      if (!(step_ > 0.0) || !(speed_ >= 0.0))
-        throw std::runtime_error("need ~step > 0, ~speed >= 0");
-      world = loadWorld(world_path);
-      chair_sim_ = std::make_unique<SimulatedChair>(chair_, params_, world);
+      settings_ = loadSettings(pnh);
+      chair_sim_ =
+          std::make_unique<SimulatedChair>(chair_, settings_.sim, loadWorld(settings_.world));
     } catch (const std::exception& e) {
       NODELET_FATAL("simulator cannot start: %s", e.what());
       throw;
     }
-    const double x = pnh.param("initial_x", 0.0), y = pnh.param("initial_y", 0.0);
-    const double yaw = pnh.param("initial_yaw", 0.0);
-    if (!chair_sim_->reset(x, y, yaw)) {
-      NODELET_FATAL("initial pose (%.2f, %.2f, %.2f) collides with %s", x, y, yaw,
-                    world_path.c_str());
+    const core::Pose2D& start = settings_.initial;
+    if (!chair_sim_->reset(start)) {
+      NODELET_FATAL("initial pose (%.2f, %.2f, %.2f) collides with %s", start.x, start.y, start.yaw,
+                    settings_.world.c_str());
       throw std::runtime_error("initial pose collides");
     }
     try {
-      loadObstacles(pnh);
+      for (const Disc& disc : obstaclesParameter(pnh))
+        chair_sim_->simulator().obstacles().add(disc);  // throws on bad values
     } catch (const std::exception& e) {
       NODELET_FATAL("simulator cannot start: ~obstacles: %s", e.what());
       throw;
     }
-    const std::string motor_bus = pnh.param<std::string>("motor_bus", "");
-    if (motor_bus == "udp") {
-      startMotorController(pnh);
-    } else if (!motor_bus.empty()) {
-      NODELET_FATAL("unknown ~motor_bus '%s' (\"\" = /wheel_torques, \"udp\")", motor_bus.c_str());
-      throw std::runtime_error("unknown ~motor_bus");
-    }
+    if (!settings_.motor_bus.empty()) startMotorController();
 
     clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("clock", 10);
     scan_pub_ = nh.advertise<sensor_msgs::LaserScan>("scan", 5);
-    if (motor_controller_) publish_odometry_ = false;  // the base driver's, from our encoders
-    if (publish_odometry_) odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
+    if (motor_controller_) settings_.publish_odometry = false;  // the driver's, from our encoders
+    if (settings_.publish_odometry) odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
     truth_pub_ = nh.advertise<nav_msgs::Odometry>("sim/ground_truth", 10);
     collision_pub_ = nh.advertise<std_msgs::Bool>("sim/collision", 1, true);
     trajectory_pub_ = nh.advertise<nav_msgs::Path>("sim/trajectory", 1, true);
-    trajectory_.header.frame_id = "map";
+    trajectory_.header.frame_id = settings_.map_frame;
     if (!motor_controller_)
       torque_sub_ = nh.subscribe("wheel_torques", 10, &SimulatorNodelet::onTorques, this);
     teleport_srv_ = nh.advertiseService("sim/teleport", &SimulatorNodelet::onTeleport, this);
@@ -167,55 +95,50 @@ class SimulatorNodelet : public nodelet::Nodelet {
         nh.advertiseService("sim/clear_obstacles", &SimulatorNodelet::onClearObstacles, this);
     laser_srv_ = nh.advertiseService("sim/enable_laser", &SimulatorNodelet::onEnableLaser, this);
     tf_ = std::make_unique<tf2_ros::TransformBroadcaster>();
-    if (publish_laser_tf) {
+    if (settings_.publish_laser_tf) {
       static_tf_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
-      static_tf_->sendTransform(transformMessage(ros::Time(0), "base_link", "laser", chair_.laser_x,
-                                                 chair_.laser_y, chair_.laser_z, chair_.laser_yaw));
+      static_tf_->sendTransform(
+          transformMessage(ros::Time(0), settings_.base_frame, settings_.laser_frame,
+                           {chair_.laser_x, chair_.laser_y, chair_.laser_yaw}, chair_.laser_z));
     }
     publishCollision(false);
     NODELET_INFO("simulator: world %s, speed %.1f (0 = as fast as possible), step %.3f s",
-                 world_path.c_str(), speed_, step_);
+                 settings_.world.c_str(), settings_.speed, settings_.step);
     running_ = true;
     loop_ = std::thread(&SimulatorNodelet::run, this);
   }
 
-  /// The motor side of the CAN bus on UDP (ports match base_driver's `_transport:=udp`).
-  void startMotorController(ros::NodeHandle& pnh) {
-    const int local = pnh.param("udp_local_port", 47111);
-    const int remote = pnh.param("udp_remote_port", 47110);
-    if (local < 0 || local > 65535 || remote < 0 || remote > 65535)
-      throw std::runtime_error("~udp_local_port / ~udp_remote_port out of range");
-    wheelchair_base_driver::EmulatedControllerConfig config;
-    config.counts_per_rev = pnh.param("counts_per_rev", config.counts_per_rev);
-    config.max_torque = chair_.max_wheel_torque;
-    motor_plant_ = std::make_unique<SimulatorMotorPlant>(chair_sim_->simulator());
-    // Frames are stamped in simulated time; only the simulation thread calls step().
-    motor_transport_ = std::make_unique<wheelchair_base_driver::UdpTransport>(
-        local, remote, [this] { return chair_sim_->simulator().time(); });
-    motor_controller_ = std::make_unique<wheelchair_base_driver::EmulatedMotorController>(
-        config, *motor_transport_, *motor_plant_);
-    NODELET_INFO("simulator: motor controller on %s, no /wheel_torques, no /odom",
-                 motor_transport_->describe().c_str());
+  /// Every private parameter over the files' values: the chair (chair_file) and sim.yaml
+  /// (sim_config), both found at run time unless given. Throws wheelchair_core::ConfigError.
+  SimulatorSettings loadSettings(const ros::NodeHandle& pnh) {
+    chair_ = wheelchair_description::loadChairOf(pnh);
+    SimulatorSettings defaults;
+    wheelchair_ros::RosParameterSource(pnh).get("sim_config", defaults.sim_config);
+    defaults.sim = loadSimParams(defaults.sim_config.empty()
+                                     ? ros::package::getPath("wheelchair_sim") + "/config/sim.yaml"
+                                     : defaults.sim_config);
+    defaults.motor_controller.max_torque = chair_.max_wheel_torque;
+    return wheelchair_ros::loadParameters(pnh, readSimulatorSettings, defaults);
   }
 
-  /// ~obstacles: [{x, y, radius, appear_time}, ...] (radius default 0.15, time default 0).
-  void loadObstacles(ros::NodeHandle& pnh) {
-    XmlRpc::XmlRpcValue list;
-    if (!pnh.getParam("obstacles", list)) return;
-    if (list.getType() != XmlRpc::XmlRpcValue::TypeArray)
-      throw std::runtime_error("~obstacles must be a list of {x, y, radius, appear_time}");
-    for (int i = 0; i < list.size(); ++i) {
-      auto number = [&](const char* key, double fallback) {
-        if (!list[i].hasMember(key)) return fallback;
-        XmlRpc::XmlRpcValue& v = list[i][key];
-        return v.getType() == XmlRpc::XmlRpcValue::TypeInt ? double(int(v)) : double(v);
-      };
-      Disc disc;
-      disc.centre = {number("x", NAN), number("y", NAN)};
-      disc.radius = number("radius", disc.radius);
-      disc.appear_time = number("appear_time", 0.0);
-      chair_sim_->simulator().obstacles().add(disc);  // throws on bad values
+  /// The motor side of the CAN bus: on UDP (ports match base_driver's `_transport:=udp`) or on
+  /// the named fake bus of this process (base_driver `_transport:=fake
+  /// _emulate_controller:=false` in the same manager).
+  void startMotorController() {
+    motor_plant_ = std::make_unique<SimulatorMotorPlant>(chair_sim_->simulator());
+    if (settings_.motor_bus == "udp") {
+      // Frames are stamped in simulated time; only the simulation thread calls step().
+      motor_transport_ =
+          std::make_shared<can::UdpTransport>(static_cast<std::uint16_t>(settings_.udp_local_port),
+                                              static_cast<std::uint16_t>(settings_.udp_remote_port),
+                                              [this] { return chair_sim_->simulator().time(); });
+    } else {  // "fake": the bus's clock is the driver's (ROS time)
+      motor_transport_ = can::FakeBus::named(settings_.fake_bus)->connect("simulator");
     }
+    motor_controller_ = std::make_unique<can::EmulatedMotorController>(
+        settings_.motor_controller, *motor_transport_, *motor_plant_);
+    NODELET_INFO("simulator: motor controller on %s, no /wheel_torques, no /odom",
+                 motor_transport_->describe().c_str());
   }
 
   bool onAddObstacle(AddObstacle::Request& req, AddObstacle::Response& res) {
@@ -276,8 +199,8 @@ class SimulatorNodelet : public nodelet::Nodelet {
 
   bool movePose(const SetPose::Request& req, SetPose::Response& res, bool reset_odometry) {
     std::lock_guard<std::mutex> lock(mutex_);
-    res.success = reset_odometry ? chair_sim_->reset(req.x, req.y, req.yaw)
-                                 : chair_sim_->teleport(req.x, req.y, req.yaw);
+    const core::Pose2D pose{req.x, req.y, req.yaw};
+    res.success = reset_odometry ? chair_sim_->reset(pose) : chair_sim_->teleport(pose);
     res.message = res.success ? "moved" : "pose collides or is not finite: chair not moved";
     if (res.success) {
       if (reset_odometry) trajectory_.poses.clear();  // a new run; a kidnapping stays visible
@@ -288,18 +211,16 @@ class SimulatorNodelet : public nodelet::Nodelet {
   }
 
   /// The true path for rviz and reports (a point every kTrajectoryStep), latched.
-  void extendTrajectory(const ros::Time& now, const Eigen::Vector3d& pose) {
+  void extendTrajectory(const ros::Time& now, const core::Pose2D& pose) {
     constexpr double kTrajectoryStep = 0.05;  // [m]
     if (!trajectory_.poses.empty()) {
       const auto& last = trajectory_.poses.back().pose.position;
-      if (std::hypot(pose.x() - last.x, pose.y() - last.y) < kTrajectoryStep) return;
+      if (std::hypot(pose.x - last.x, pose.y - last.y) < kTrajectoryStep) return;
     }
     geometry_msgs::PoseStamped p;
     p.header.stamp = now;
-    p.header.frame_id = "map";
-    p.pose.position.x = pose.x();
-    p.pose.position.y = pose.y();
-    p.pose.orientation = yawToQuaternion(pose.z());
+    p.header.frame_id = settings_.map_frame;
+    p.pose = wheelchair_ros::toPoseMsg(pose);
     trajectory_.header.stamp = now;
     trajectory_.poses.push_back(p);
     trajectory_pub_.publish(trajectory_);
@@ -313,9 +234,10 @@ class SimulatorNodelet : public nodelet::Nodelet {
 
   /// Zero torque when no command arrived for torque_timeout simulated seconds.
   void guardStaleTorques() {
-    if (chair_sim_->simulator().time() - last_torque_time_ <= torque_timeout_) return;
+    if (chair_sim_->simulator().time() - last_torque_time_ <= settings_.torque_timeout) return;
     if (!torques_stale_) {
-      NODELET_WARN("no /wheel_torques for %.2f s of simulated time: zero torque", torque_timeout_);
+      NODELET_WARN("no /wheel_torques for %.2f s of simulated time: zero torque",
+                   settings_.torque_timeout);
       torques_stale_ = true;
     }
     chair_sim_->simulator().applyWheelTorques(0.0, 0.0, false);
@@ -332,12 +254,12 @@ class SimulatorNodelet : public nodelet::Nodelet {
         } else {
           guardStaleTorques();
         }
-        const SensorOutputs out = chair_sim_->advance(step_);
+        const SensorOutputs out = chair_sim_->advance(settings_.step);
         publish(out);
       }
-      sim_elapsed += step_;
-      if (speed_ > 0.0) {
-        const ros::WallTime due = wall_start + ros::WallDuration(sim_elapsed / speed_);
+      sim_elapsed += settings_.step;
+      if (settings_.speed > 0.0) {
+        const ros::WallTime due = wall_start + ros::WallDuration(sim_elapsed / settings_.speed);
         const ros::WallTime now = ros::WallTime::now();
         const ros::WallDuration wait = due - now;
         if (wait > ros::WallDuration(0)) {
@@ -345,7 +267,7 @@ class SimulatorNodelet : public nodelet::Nodelet {
         } else if (wait < ros::WallDuration(-kMaxLag)) {
           // Behind after a stall (loaded machine): do not race to catch up — a burst of
           // simulated time would starve every node of CPU; simulated time runs slower instead.
-          wall_start = now - ros::WallDuration(sim_elapsed / speed_);
+          wall_start = now - ros::WallDuration(sim_elapsed / settings_.speed);
         }
       } else {
         std::this_thread::yield();
@@ -360,29 +282,28 @@ class SimulatorNodelet : public nodelet::Nodelet {
     clock.clock = now;
     clock_pub_.publish(clock);
     if (out.collision_started) {
-      const Eigen::Vector3d p = sim.pose();
-      NODELET_ERROR("COLLISION at (%.2f, %.2f, %.2f): chair stopped and held", p.x(), p.y(), p.z());
+      const core::Pose2D p = sim.pose();
+      NODELET_ERROR("COLLISION at (%.2f, %.2f, %.2f): chair stopped and held", p.x, p.y, p.yaw);
       publishCollision(true);
     }
-    if (out.scan && laser_on_) scan_pub_.publish(scanMessage(now, *out.scan, params_.laser_rate));
+    if (out.scan && laser_on_)
+      scan_pub_.publish(scanMessage(*out.scan, settings_.laser_frame, settings_.sim.laser_rate));
     if (!out.odometry_due) return;
-    truth_pub_.publish(odometryMessage(now, "map", sim.pose(), sim.velocity()));
+    const std::string& base = settings_.base_frame;
+    truth_pub_.publish(odometryMessage(now, settings_.map_frame, base, sim.pose(), sim.velocity()));
     extendTrajectory(now, sim.pose());
-    if (!publish_odometry_) return;
+    if (!settings_.publish_odometry) return;
     const WheelOdometry& odo = chair_sim_->odometry();
-    odom_pub_.publish(odometryMessage(now, "odom", odo.pose(), odo.velocity()));
-    tf_->sendTransform(transformMessage(now, "odom", "base_link", odo.pose().x(), odo.pose().y(),
-                                        0.0, odo.pose().z()));
+    odom_pub_.publish(odometryMessage(now, settings_.odom_frame, base, odo.pose(), odo.velocity()));
+    tf_->sendTransform(transformMessage(now, settings_.odom_frame, base, odo.pose()));
   }
 
+  SimulatorSettings settings_;
   wheelchair_description::ChairParams chair_;
-  SimParams params_;
   std::unique_ptr<SimulatedChair> chair_sim_;
   std::unique_ptr<SimulatorMotorPlant> motor_plant_;
-  std::unique_ptr<wheelchair_base_driver::UdpTransport> motor_transport_;
-  std::unique_ptr<wheelchair_base_driver::EmulatedMotorController> motor_controller_;
-  double speed_ = 1.0, step_ = 0.005, torque_timeout_ = 0.5;
-  bool publish_odometry_ = true;
+  std::shared_ptr<can::CanTransport> motor_transport_;
+  std::unique_ptr<can::EmulatedMotorController> motor_controller_;
   double last_torque_time_ = -1e9;
   bool torques_stale_ = true;
   std::mutex mutex_;

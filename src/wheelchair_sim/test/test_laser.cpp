@@ -14,11 +14,11 @@ constexpr double kRes = 0.05;
 
 TEST(Laser, BeamCountAndAnglesAreTheSicks) {
   SimParams params;
-  LaserSimulator laser(params, Eigen::Vector3d::Zero(), test::wallWorld(3.0));
-  const Scan scan = laser.scan(Eigen::Vector3d::Zero());
+  LaserSimulator laser(params, wheelchair_core::Pose2D(), test::wallWorld(3.0));
+  const wheelchair_core::LaserScan2D scan = laser.scan(wheelchair_core::Pose2D());
   ASSERT_EQ(scan.ranges.size(), 361u);
   EXPECT_NEAR(scan.angle_min, -M_PI / 2, 1e-12);
-  EXPECT_NEAR(scan.angleMax(), M_PI / 2, 1e-12);
+  EXPECT_NEAR(scan.angle_max, M_PI / 2, 1e-12);
   EXPECT_NEAR(scan.angle_increment, 0.5 * M_PI / 180.0, 1e-12);
   EXPECT_DOUBLE_EQ(scan.range_max, params.laser_range_max);
 }
@@ -28,17 +28,17 @@ TEST(Laser, RangesMatchTheAnalyticWallDistance) {
   const auto chair = test::chair();
   SimParams params;
   params.laser_range_noise = 0.01;
-  const Eigen::Vector3d mount(chair.laser_x, chair.laser_y, chair.laser_yaw);
+  const wheelchair_core::Pose2D mount{chair.laser_x, chair.laser_y, chair.laser_yaw};
   LaserSimulator laser(params, mount, test::wallWorld(3.0));
-  const Eigen::Vector3d base(0.4, -0.6, 0.3);
-  const Eigen::Vector3d sensor = laser.laserPose(base);
-  EXPECT_NEAR(sensor.x(), 0.4 + chair.laser_x * std::cos(0.3), 1e-12);
-  const Scan scan = laser.scan(base);
+  const wheelchair_core::Pose2D base{0.4, -0.6, 0.3};
+  const wheelchair_core::Pose2D sensor = laser.laserPose(base);
+  EXPECT_NEAR(sensor.x, 0.4 + chair.laser_x * std::cos(0.3), 1e-12);
+  const wheelchair_core::LaserScan2D scan = laser.scan(base);
   int checked = 0, no_return = 0;
   for (size_t i = 0; i < scan.ranges.size(); ++i) {
-    const double a = sensor.z() + scan.angle_min + i * scan.angle_increment;
-    const double expected = (3.0 - sensor.x()) / std::cos(a);
-    const double hit_y = sensor.y() + expected * std::sin(a);
+    const double a = sensor.yaw + scan.angle_min + i * scan.angle_increment;
+    const double expected = (3.0 - sensor.x) / std::cos(a);
+    const double hit_y = sensor.y + expected * std::sin(a);
     if (std::cos(a) > 0.05 && std::abs(hit_y) < 4.8 && expected < params.laser_range_max) {
       // Noise (4 sigma) + MRPT's ray marching resolution (one cell along the ray).
       EXPECT_NEAR(scan.ranges[i], expected, 4 * params.laser_range_noise + kRes / std::cos(a))
@@ -58,14 +58,14 @@ TEST(Laser, RangeNoiseHasTheConfiguredSpread) {
   exact.laser_range_noise = 0.0;
   noisy.laser_range_noise = 0.03;
   auto world = test::wallWorld(4.0);
-  LaserSimulator reference(exact, Eigen::Vector3d::Zero(), world);
-  LaserSimulator laser(noisy, Eigen::Vector3d::Zero(), world);
-  const Eigen::Vector3d base(0.0, 0.0, 0.0);
-  const Scan truth = reference.scan(base);
+  LaserSimulator reference(exact, wheelchair_core::Pose2D(), world);
+  LaserSimulator laser(noisy, wheelchair_core::Pose2D(), world);
+  const wheelchair_core::Pose2D base{0.0, 0.0, 0.0};
+  const wheelchair_core::LaserScan2D truth = reference.scan(base);
   double sum = 0.0, sum2 = 0.0;
   int n = 0;
   for (int k = 0; k < 20; ++k) {
-    const Scan scan = laser.scan(base);
+    const wheelchair_core::LaserScan2D scan = laser.scan(base);
     for (size_t i = 0; i < scan.ranges.size(); ++i) {
       if (!std::isfinite(truth.ranges[i]) || !std::isfinite(scan.ranges[i])) continue;
       const double e = scan.ranges[i] - truth.ranges[i];
@@ -83,9 +83,9 @@ TEST(Laser, RangeNoiseHasTheConfiguredSpread) {
 TEST(Laser, SameSeedSameScan) {
   SimParams params;
   auto world = test::wallWorld(2.0);
-  LaserSimulator a(params, Eigen::Vector3d::Zero(), world),
-      b(params, Eigen::Vector3d::Zero(), world);
-  EXPECT_EQ(a.scan(Eigen::Vector3d::Zero()).ranges, b.scan(Eigen::Vector3d::Zero()).ranges);
+  LaserSimulator a(params, wheelchair_core::Pose2D(), world),
+      b(params, wheelchair_core::Pose2D(), world);
+  EXPECT_EQ(a.scan(wheelchair_core::Pose2D()).ranges, b.scan(wheelchair_core::Pose2D()).ranges);
 }
 
 }  // namespace

@@ -54,15 +54,15 @@ TEST(Obstacles, DrivingIntoAPersonIsACollisionAndTeleportOntoOneIsRefused) {
   SimParams params;
   SimulatedChair sim(chair, params, test::wallWorld(8.0));
   sim.simulator().obstacles().add({Eigen::Vector2d(2.5, 0.0), 0.15, 0.0});
-  EXPECT_FALSE(sim.teleport(2.5, 0.0, 0.0));
+  EXPECT_FALSE(sim.teleport({2.5, 0.0, 0.0}));
   sim.simulator().applyWheelTorques(20.0, 20.0, false);
   for (int i = 0; i < 400 && !sim.simulator().collided(); ++i) sim.advance(0.01);
   ASSERT_TRUE(sim.simulator().collided());
   double front = -1e9;
   for (const auto& v : chair.footprint) front = std::max(front, v.x());
-  EXPECT_NEAR(sim.simulator().pose().x() + front, 2.5 - 0.15, 0.03);
+  EXPECT_NEAR(sim.simulator().pose().x + front, 2.5 - 0.15, 0.03);
   sim.simulator().obstacles().clear();
-  EXPECT_TRUE(sim.teleport(2.5, 0.0, 0.0));
+  EXPECT_TRUE(sim.teleport({2.5, 0.0, 0.0}));
 }
 
 }  // namespace

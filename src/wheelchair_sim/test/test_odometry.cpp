@@ -23,7 +23,7 @@ SimParams noErrors() {
 void roll(WheelOdometry& odo, const wheelchair_description::ChairParams& c, double d_r, double d_l,
           int steps) {
   Eigen::Vector2d psi = Eigen::Vector2d::Zero();
-  odo.reset(Eigen::Vector3d::Zero(), psi);
+  odo.reset(wheelchair_core::Pose2D(), psi);
   for (int k = 1; k <= steps; ++k) {
     psi = Eigen::Vector2d(d_r, d_l) * (double(k) / steps) / c.wheel_radius;
     odo.update(psi, 0.02);
@@ -36,8 +36,8 @@ TEST(Odometry, RadiusErrorScalesTheDistance) {
   p.odom_radius_error_right = p.odom_radius_error_left = 0.02;
   WheelOdometry odo(chair, p, 1);
   roll(odo, chair, 4.0, 4.0, 200);
-  EXPECT_NEAR(odo.pose().x(), 4.0 * 1.02, 1e-9);
-  EXPECT_NEAR(odo.pose().y(), 0.0, 1e-12);
+  EXPECT_NEAR(odo.pose().x, 4.0 * 1.02, 1e-9);
+  EXPECT_NEAR(odo.pose().y, 0.0, 1e-12);
 }
 
 TEST(Odometry, UnequalRadiiCurveAStraightDrive) {
@@ -46,7 +46,7 @@ TEST(Odometry, UnequalRadiiCurveAStraightDrive) {
   p.odom_radius_error_right = 0.01;
   WheelOdometry odo(chair, p, 1);
   roll(odo, chair, 5.0, 5.0, 500);
-  EXPECT_NEAR(odo.pose().z(), 0.5 * 5.0 * 0.01 / chair.half_track, 1e-9);
+  EXPECT_NEAR(odo.pose().yaw, 0.5 * 5.0 * 0.01 / chair.half_track, 1e-9);
 }
 
 TEST(Odometry, TrackErrorScalesTheTurn) {
@@ -56,8 +56,8 @@ TEST(Odometry, TrackErrorScalesTheTurn) {
   WheelOdometry odo(chair, p, 1);
   const double arc = chair.half_track * M_PI / 2;  // a quarter turn in place
   roll(odo, chair, arc, -arc, 100);
-  EXPECT_NEAR(odo.pose().z(), M_PI / 2 / 1.05, 1e-9);
-  EXPECT_NEAR(odo.pose().head<2>().norm(), 0.0, 1e-12);
+  EXPECT_NEAR(odo.pose().yaw, M_PI / 2 / 1.05, 1e-9);
+  EXPECT_NEAR(odo.pose().position().norm(), 0.0, 1e-12);
 }
 
 /// Sample mean and standard deviation of the final (distance, heading) errors of `runs`
@@ -71,7 +71,7 @@ void driftStatistics(double noise, double distance, int runs, Eigen::Vector2d& m
   for (int run = 0; run < runs; ++run) {
     WheelOdometry odo(chair, p, 1000 + run);
     roll(odo, chair, distance, distance, 100);
-    const Eigen::Vector2d e(odo.pose().x() - distance, odo.pose().z());
+    const Eigen::Vector2d e(odo.pose().x - distance, odo.pose().yaw);
     sum += e;
     sum2 += e.cwiseProduct(e);
   }
@@ -103,25 +103,25 @@ TEST(Odometry, ErrorFreeOdometryFollowsTheGroundTruthOnACurve) {
   SimulatedChair sim(chair, p, nullptr);
   sim.simulator().applyWheelTorques(6.0, 2.0, false);
   for (int i = 0; i < 600; ++i) sim.advance(0.01);
-  ASSERT_GT(sim.simulator().pose().head<2>().norm(), 1.0);
-  ASSERT_GT(std::abs(sim.simulator().pose().y()), 0.3);  // a curve, not a line
-  const Eigen::Vector3d odo = sim.odometry().pose(), truth = sim.simulator().pose();
-  EXPECT_LT((odo - truth).head<2>().norm(), 2e-3);
-  EXPECT_NEAR(std::remainder(odo.z() - truth.z(), 2 * M_PI), 0.0, 1e-3);
-  EXPECT_NEAR(sim.odometry().velocity()(0), sim.simulator().velocity()(0), 0.02);
+  ASSERT_GT(sim.simulator().pose().position().norm(), 1.0);
+  ASSERT_GT(std::abs(sim.simulator().pose().y), 0.3);  // a curve, not a line
+  const wheelchair_core::Pose2D odo = sim.odometry().pose(), truth = sim.simulator().pose();
+  EXPECT_LT((odo.position() - truth.position()).norm(), 2e-3);
+  EXPECT_NEAR(std::remainder(odo.yaw - truth.yaw, 2 * M_PI), 0.0, 1e-3);
+  EXPECT_NEAR(sim.odometry().velocity().v, sim.simulator().velocity().v, 0.02);
 }
 
 TEST(Odometry, TeleportIsInvisibleToOdometryButResetRestartsIt) {
   const auto chair = test::chair();
   SimulatedChair sim(chair, noErrors(), nullptr);
-  ASSERT_TRUE(sim.teleport(5.0, 5.0, 1.0));
-  EXPECT_EQ(sim.odometry().pose(), Eigen::Vector3d::Zero());
+  ASSERT_TRUE(sim.teleport({5.0, 5.0, 1.0}));
+  EXPECT_EQ(test::asVector(sim.odometry().pose()), Eigen::Vector3d::Zero());
   sim.simulator().applyWheelTorques(10.0, 10.0, false);
   for (int i = 0; i < 100; ++i) sim.advance(0.01);
-  ASSERT_GT(sim.odometry().pose().x(), 0.1);
-  ASSERT_TRUE(sim.reset(1.0, 1.0, 0.0));
-  EXPECT_EQ(sim.odometry().pose(), Eigen::Vector3d::Zero());
-  EXPECT_EQ(sim.simulator().velocity(), Eigen::Vector2d::Zero());
+  ASSERT_GT(sim.odometry().pose().x, 0.1);
+  ASSERT_TRUE(sim.reset({1.0, 1.0, 0.0}));
+  EXPECT_EQ(test::asVector(sim.odometry().pose()), Eigen::Vector3d::Zero());
+  EXPECT_EQ(test::asVector(sim.simulator().velocity()), Eigen::Vector2d::Zero());
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <wheelchair_msgs/WheelTorques.h>
+#include <wheelchair_ros/conversions.h>
 
 #include <cmath>
 #include <cstdio>
@@ -18,10 +19,7 @@ namespace {
 
 using wheelchair_sim::test::waitFor;
 
-double yawOf(const nav_msgs::Odometry& m) {
-  const auto& q = m.pose.pose.orientation;
-  return 2.0 * std::atan2(q.z, q.w);
-}
+double yawOf(const nav_msgs::Odometry& m) { return wheelchair_ros::yawOf(m.pose.pose.orientation); }
 
 class SimOnBus : public ::testing::Test {
  protected:

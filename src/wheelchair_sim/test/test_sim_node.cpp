@@ -9,8 +9,9 @@
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
-#include <wheelchair_description/chair_params.h>
+#include <wheelchair_description_testing/chair_file.h>
 #include <wheelchair_msgs/WheelTorques.h>
+#include <wheelchair_ros/conversions.h>
 
 #include <atomic>
 #include <cmath>
@@ -105,8 +106,7 @@ class SimNode : public ::testing::Test {
 
 // Equal torques: v grows by a dt with a = 2 tau / r / (M_T + 2 m_w + 2 I_w / r^2).
 TEST_F(SimNode, TorquesDriveTheChairAsTheModelPredicts) {
-  const auto chair =
-      wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath());
+  const auto chair = wheelchair_description::test::shippedChair();
   const double tau = 8.0;
   const double a = 2.0 * tau / chair.wheel_radius /
                    (chair.total_mass + 2 * chair.wheel_mass +
@@ -150,8 +150,7 @@ TEST_F(SimNode, ScansArriveWithTheSicksHeaderAndSeeTheFrontWall) {
   EXPECT_NEAR(s.angle_increment, M_PI / 360, 1e-7);
   EXPECT_NEAR(s.angle_min + s.angle_increment * (s.ranges.size() - 1), s.angle_max, 1e-6);
   EXPECT_GT(s.header.stamp.toSec(), 0.0);
-  const auto chair =
-      wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath());
+  const auto chair = wheelchair_description::test::shippedChair();
   // Beam 180 looks straight ahead from the laser at x = laser_x to the wall at x = 8.
   // Tolerance: 1 cm noise (3 sigma) + MRPT's ~4 cm range quantization.
   EXPECT_NEAR(s.ranges[180], kFrontWall - chair.laser_x, 0.08);
@@ -186,8 +185,7 @@ TEST_F(SimNode, TeleportMovesTheTruthNotTheOdometryAndResetRestartsOdometry) {
   ASSERT_TRUE(waitForFreshState());
   EXPECT_NEAR(truth().pose.pose.position.x, 3.0, 1e-9);
   EXPECT_NEAR(truth().pose.pose.position.y, 1.0, 1e-9);
-  EXPECT_NEAR(2.0 * std::atan2(truth().pose.pose.orientation.z, truth().pose.pose.orientation.w),
-              1.0, 1e-9);
+  EXPECT_NEAR(wheelchair_ros::yawOf(truth().pose.pose.orientation), 1.0, 1e-9);
   EXPECT_NEAR(latest_.odom.pose.pose.position.x, 0.0, 1e-9) << "odometry must not see a kidnap";
 
   srv.request.x = kFrontWall;  // inside the wall

@@ -2,8 +2,14 @@
 #pragma once
 
 #include <wheelchair_description/chair_params.h>
+#include <wheelchair_description_testing/chair_file.h>
+
+#include <wheelchair_core/kinematics.h>
+#include <wheelchair_core/pose2d.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
+
+#include <Eigen/Core>
 
 #include <memory>
 
@@ -26,8 +32,14 @@ inline std::shared_ptr<mrpt::maps::COccupancyGridMap2D> wallWorld(double wall_x,
 }
 
 inline wheelchair_description::ChairParams chair() {
-  return wheelchair_description::loadChairParams(wheelchair_description::defaultChairParamsPath());
+  return wheelchair_description::test::shippedChair();
 }
+
+/// A pose as the vector (x, y, yaw), for comparisons of whole poses.
+inline Eigen::Vector3d asVector(const wheelchair_core::Pose2D& p) { return {p.x, p.y, p.yaw}; }
+
+/// A twist as the vector (v, omega).
+inline Eigen::Vector2d asVector(const wheelchair_core::BodyTwist& t) { return {t.v, t.omega}; }
 
 }  // namespace test
 }  // namespace wheelchair_sim

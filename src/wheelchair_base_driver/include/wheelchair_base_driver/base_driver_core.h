@@ -11,11 +11,11 @@
 // ended (no stale command can restart the chair).
 #pragma once
 
-#include <wheelchair_base_driver/can_error.h>
+#include <wheelchair_base_driver/driver_config.h>
 #include <wheelchair_base_driver/encoder_odometry.h>
-#include <wheelchair_base_driver/protocol.h>
-#include <wheelchair_base_driver/sequence_tracker.h>
-#include <wheelchair_base_driver/transport.h>
+#include <wheelchair_can/protocol.h>
+#include <wheelchair_can/sequence_tracker.h>
+#include <wheelchair_can/transport.h>
 
 #include <array>
 #include <cstdint>
@@ -23,17 +23,6 @@
 #include <vector>
 
 namespace wheelchair_base_driver {
-
-struct DriverConfig {
-  WheelGeometry geometry;
-  double max_torque = 0.0;          ///< [N m] per wheel; larger |torque| is rejected
-  double command_period = 0.01;     ///< torque frames are repeated at this period (100 Hz)
-  double heartbeat_period = 0.05;   ///< driver heartbeat period (20 Hz)
-  double command_timeout = 0.1;     ///< torque message watchdog [s]
-  double controller_timeout = 0.2;  ///< MC heartbeat watchdog [s]
-};
-/// Throws std::invalid_argument naming the first bad value.
-void validate(const DriverConfig& config);
 
 enum class DriverState {
   kNoController = 0,   ///< no MC heartbeat seen yet
@@ -61,7 +50,8 @@ struct DriverCounters {
   std::uint64_t send_failures = 0;
   std::uint64_t frames_received = 0;
   std::uint64_t error_frames = 0;
-  std::array<std::uint64_t, 8> decode_errors{};  ///< indexed by protocol::DecodeError
+  std::array<std::uint64_t, 8>
+      decode_errors{};                 ///< indexed by wheelchair_can::protocol::DecodeError
   std::uint64_t foreign_commands = 0;  ///< torque/heartbeat frames of another driver on the bus
   std::uint64_t encoder_lost = 0;      ///< encoder frames skipped (sequence gaps)
   std::uint64_t encoder_duplicated = 0;
@@ -75,7 +65,8 @@ struct DriverCounters {
 
 class BaseDriverCore {
  public:
-  BaseDriverCore(const DriverConfig& config, CanTransport& transport);
+  /// Throws std::invalid_argument if `config` is not valid (DriverConfig::validate).
+  BaseDriverCore(const DriverConfig& config, wheelchair_can::CanTransport& transport);
 
   /// A wheelchair_msgs/WheelTorques message received at `now`; `stamp` is its header time
   /// (<= 0: unknown, not checked). Sends the resulting frame immediately.
@@ -85,16 +76,16 @@ class BaseDriverCore {
   /// Drains the transport, runs the watchdogs, sends due frames. Call at >= 200 Hz.
   void spinOnce(double now);
   /// The receive path for one frame (spinOnce calls it for every received frame).
-  void processFrame(const CanFrame& frame, double now);
+  void processFrame(const wheelchair_can::CanFrame& frame, double now);
 
   DriverState state() const { return state_; }
   bool estopLatched() const { return estop_; }
   const DriverCounters& counters() const { return counters_; }
   const OdometryState& odometry() const { return odometry_.state(); }
   /// The last torque command put on the bus.
-  const protocol::TorqueCommand& lastCommand() const { return last_sent_; }
+  const wheelchair_can::protocol::TorqueCommand& lastCommand() const { return last_sent_; }
   std::uint16_t controllerFaults() const { return mc_faults_; }
-  protocol::ControllerState controllerState() const { return mc_state_; }
+  wheelchair_can::protocol::ControllerState controllerState() const { return mc_state_; }
   const std::string& lastBusError() const { return last_bus_error_; }
   const std::string& lastRejection() const { return last_rejection_; }
   const DriverConfig& config() const { return config_; }
@@ -104,12 +95,12 @@ class BaseDriverCore {
   void update(double now, bool force_send);
   void sendCommand();
   void sendHeartbeat();
-  void handleEncoder(const protocol::EncoderCounts& counts, double stamp);
+  void handleEncoder(const wheelchair_can::protocol::EncoderCounts& counts, double stamp);
 
   DriverConfig config_;
-  CanTransport& transport_;
+  wheelchair_can::CanTransport& transport_;
   EncoderOdometry odometry_;
-  std::vector<CanFrame> rx_;
+  std::vector<wheelchair_can::CanFrame> rx_;
 
   DriverState state_ = DriverState::kNoController;
   bool estop_ = false;
@@ -121,11 +112,12 @@ class BaseDriverCore {
 
   bool has_heartbeat_ = false;
   double last_heartbeat_time_ = 0.0;
-  protocol::ControllerState mc_state_ = protocol::ControllerState::kInit;
+  wheelchair_can::protocol::ControllerState mc_state_ =
+      wheelchair_can::protocol::ControllerState::kInit;
   std::uint16_t mc_faults_ = 0;
-  SequenceTracker encoder_sequence_;
+  wheelchair_can::SequenceTracker encoder_sequence_;
 
-  protocol::TorqueCommand last_sent_;
+  wheelchair_can::protocol::TorqueCommand last_sent_;
   std::uint8_t command_sequence_ = 0;
   std::uint8_t heartbeat_counter_ = 0;
   double next_command_due_ = -1e300;    ///< next periodic torque frame [s]

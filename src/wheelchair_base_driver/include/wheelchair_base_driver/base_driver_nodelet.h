@@ -3,8 +3,10 @@
 #pragma once
 
 #include <wheelchair_base_driver/base_driver_core.h>
-#include <wheelchair_base_driver/emulated_motor_controller.h>
-#include <wheelchair_base_driver/transport.h>
+#include <wheelchair_base_driver/base_driver_settings.h>
+#include <wheelchair_can/emulated_motor_controller.h>
+#include <wheelchair_can/simple_wheel_plant.h>
+#include <wheelchair_can/transport.h>
 
 #include <diagnostic_msgs/DiagnosticStatus.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -27,6 +29,10 @@ class BaseDriverNodelet : public nodelet::Nodelet {
 
  private:
   void onInit() override;
+  /// Every private parameter, the chair file's geometry and torque limit as their defaults.
+  /// Throws wheelchair_core::ConfigError (the nodelet is then refused).
+  BaseDriverSettings loadSettings();
+  void startEmulatedController();
   void onTorques(const wheelchair_msgs::WheelTorques::ConstPtr& msg);
   void onEstopTopic(const std_msgs::Bool::ConstPtr& msg);
   bool onEstopService(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
@@ -37,12 +43,13 @@ class BaseDriverNodelet : public nodelet::Nodelet {
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   std::mutex mutex_;  // guards the core and the emulated controller
-  std::shared_ptr<CanTransport> transport_;
+  BaseDriverSettings settings_;
+  std::shared_ptr<wheelchair_can::CanTransport> transport_;
   std::unique_ptr<BaseDriverCore> core_;
   // Stand-alone fake mode: a controller with a trivial plant on the same fake bus.
-  std::shared_ptr<CanTransport> emulated_port_;
-  std::unique_ptr<SimpleWheelPlant> emulated_plant_;
-  std::unique_ptr<EmulatedMotorController> emulated_controller_;
+  std::shared_ptr<wheelchair_can::CanTransport> emulated_port_;
+  std::unique_ptr<wheelchair_can::SimpleWheelPlant> emulated_plant_;
+  std::unique_ptr<wheelchair_can::EmulatedMotorController> emulated_controller_;
   double last_plant_time_ = -1.0;
 
   ros::Subscriber torque_sub_, estop_sub_;
@@ -51,8 +58,6 @@ class BaseDriverNodelet : public nodelet::Nodelet {
   ros::Timer timer_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_;
   std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
-  std::string odom_frame_, base_frame_, left_joint_, right_joint_;
-  bool publish_tf_ = true;
   double last_odom_stamp_ = -1.0;
   double odom_period_ = 0.0;  ///< [s] least time between published odometries (0: every frame)
   double last_status_time_ = -1.0;

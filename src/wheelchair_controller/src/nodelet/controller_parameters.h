@@ -5,7 +5,7 @@
 
 #include <wheelchair_controller/tracker_config.h>
 #include <wheelchair_core/config.h>
-#include <wheelchair_description/package_paths.h>
+#include <wheelchair_description/chair_file.h>
 
 #include <string>
 
@@ -14,7 +14,7 @@ namespace wheelchair_controller {
 struct ControllerParameters {
   TrackerConfig tracker;
   /// The chair's description (wheelchair_description's chair.yaml, found at run time).
-  std::string chair_file = wheelchair_description::chairParamsPathFromRos();
+  std::string chair_file = wheelchair_description::defaultChairFile();
   std::string map_frame = "map";
   std::string base_frame = "base_link";
   double rate = 50.0;  ///< [Hz] control steps and /wheel_torques

@@ -1,11 +1,17 @@
 // The physical parameters of the chair: one struct, filled from one YAML file
-// (config/chair.yaml), read by the controller, the simulator and the base driver.
+// (config/chair.yaml), read by the controller, the simulator and the base driver. One
+// parameter pattern (wheelchair_core/config.h): readChairParams names every key (all of them
+// required: a chair file is complete), validate() says what is wrong, an unknown key is refused.
 #pragma once
 
-#include <Eigen/Core>
+#include <wheelchair_core/kinematics.h>
+#include <wheelchair_core/polygon.h>
 
 #include <string>
-#include <vector>
+
+namespace wheelchair_core {
+class ConfigReader;
+}
 
 namespace wheelchair_description {
 
@@ -26,26 +32,28 @@ struct ChairParams {
   double width = 0.0;               ///< overall width [m]
   double length = 0.0;              ///< overall length [m]
   /// Footprint polygon in base_link (origin at P, x forward, y left), counter-clockwise [m].
-  std::vector<Eigen::Vector2d> footprint;
-  /// Laser scanner mount in base_link: x, y, z [m], yaw [rad].
+  wheelchair_core::Polygon footprint;
+  /// Laser scanner mount in base_link: x, y, z [m], yaw [rad] (keys laser/x ... laser/yaw).
   double laser_x = 0.0, laser_y = 0.0, laser_z = 0.0, laser_yaw = 0.0;
 
   /// Radius of the largest circle about P inside the footprint's width: width / 2.
   double inscribedRadius() const { return 0.5 * width; }
   /// Radius of the smallest circle about P enclosing the footprint.
-  double circumscribedRadius() const;
+  double circumscribedRadius() const { return wheelchair_core::circumscribedRadius(footprint); }
+  /// r and b, what the kinematics (eq. 10-11) need.
+  wheelchair_core::WheelBase wheelBase() const { return {wheel_radius, half_track}; }
+
+  /// "" if the chair is physically meaningful, else every problem, each naming its parameter
+  /// in quotes ("chair parameter 'half_track' must be finite and positive (got -0.2)").
+  std::string validate() const;
 };
 
-/// Reads the chair's YAML file. Throws std::runtime_error naming the file and the
-/// missing, non-finite or non-positive parameter.
+/// Every key of a chair file, each required: the scalars by their member names, footprint
+/// (a list of [x, y]) and laser/x, laser/y, laser/z, laser/yaw.
+void readChairParams(wheelchair_core::ConfigReader& reader, ChairParams& params);
+
+/// Reads and validates a chair file. Throws wheelchair_core::ConfigError naming the file and
+/// the unreadable file, the missing, unknown, non-numeric or invalid parameter.
 ChairParams loadChairParams(const std::string& yaml_path);
-
-/// Checks a parameter set; throws std::invalid_argument naming the first bad value.
-void validate(const ChairParams& params);
-
-/// Path of the chair file known at compile time (this package's install, else source dir):
-/// for tests and tools. Nodelets resolve it at run time: chairParamsPathFromRos()
-/// (package_paths.h), so an installed package works wherever it is installed.
-std::string defaultChairParamsPath();
 
 }  // namespace wheelchair_description

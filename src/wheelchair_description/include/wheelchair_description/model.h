@@ -63,10 +63,12 @@ State integrateRK4(const State& x, const Eigen::Vector2d& tau, double dt, const 
 /// Kinetic energy T = 1/2 eta^T f1 eta (conserved with zero torque and no friction).
 double kineticEnergy(const State& x, const ChairParams& p);
 
-/// Forward speed of the axle centre P and yaw rate from wheel speeds: (v, omega).
+/// Eq. 10-11 (wheelchair_core::bodyTwist): forward speed of the axle centre P and yaw rate
+/// from wheel speeds eta = [psi_r_dot, psi_l_dot]: (v, omega).
 Eigen::Vector2d bodyVelocity(const Eigen::Vector2d& eta, const ChairParams& p);
 
-/// Wheel speeds [psi_r_dot, psi_l_dot] that give forward speed v at P and yaw rate omega.
+/// The inverse (wheelchair_core::wheelRates): wheel speeds [psi_r_dot, psi_l_dot] that give
+/// forward speed v at P and yaw rate omega.
 Eigen::Vector2d wheelSpeeds(double v, double omega, const ChairParams& p);
 
 /// Pose of the axle centre P (the base_link origin) from the state: (x, y, theta).

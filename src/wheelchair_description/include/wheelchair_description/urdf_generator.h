@@ -20,6 +20,7 @@ constexpr const char* kRightWheelJoint = "right_wheel_joint";
 /// left/right drive wheels on continuous joints about +y (positive angle rolls forward, as
 /// psi_l/psi_r of the model); two fixed rear casters; the body + rider link at P_c carrying
 /// M_T and I_T; the laser at the chair file's mount. Shapes are boxes and cylinders.
+/// Throws std::invalid_argument if `params` is not valid (ChairParams::validate).
 std::string chairUrdf(const ChairParams& params);
 
 }  // namespace wheelchair_description

@@ -1,13 +1,13 @@
-// Lets wheelchair_base_driver's emulated CAN motor controller drive the simulator: its
-// MotorPlant interface (left/right) mapped onto the simulator's WheelPlant (right/left).
+// Lets wheelchair_can's emulated CAN motor controller drive the simulator: its MotorPlant
+// interface (left/right) mapped onto the simulator's WheelPlant (right/left).
 #pragma once
 
-#include <wheelchair_base_driver/motor_plant.h>
+#include <wheelchair_can/motor_plant.h>
 #include <wheelchair_sim/wheel_plant.h>
 
 namespace wheelchair_sim {
 
-class SimulatorMotorPlant : public wheelchair_base_driver::MotorPlant {
+class SimulatorMotorPlant : public wheelchair_can::MotorPlant {
  public:
   explicit SimulatorMotorPlant(WheelPlant& wheels) : wheels_(wheels) {}
 
@@ -15,9 +15,9 @@ class SimulatorMotorPlant : public wheelchair_base_driver::MotorPlant {
     wheels_.applyWheelTorques(right, left, brake);
   }
 
-  wheelchair_base_driver::WheelAngles wheelAngles() const override {
+  wheelchair_can::WheelAngles wheelAngles() const override {
     const WheelReading r = wheels_.readWheels();
-    wheelchair_base_driver::WheelAngles angles;
+    wheelchair_can::WheelAngles angles;
     angles.left = r.angle(1);
     angles.right = r.angle(0);
     return angles;

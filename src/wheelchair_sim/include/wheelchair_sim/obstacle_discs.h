@@ -2,6 +2,8 @@
 // simulated time. The laser sees them and the chair collides with them, like map cells.
 #pragma once
 
+#include <wheelchair_core/polygon.h>
+
 #include <Eigen/Core>
 
 #include <vector>
@@ -31,9 +33,8 @@ class ObstacleDiscs {
 /// or +Inf when it misses them all (a ray starting inside a disc hits at 0).
 double rayToDiscs(const Eigen::Vector2d& origin, double angle, const std::vector<Disc>& discs);
 
-/// True if the polygon `outline` (world frame, closed) overlaps any disc: a vertex or the
-/// disc's centre inside the other, or an edge closer to the centre than the radius.
-bool polygonTouchesDiscs(const std::vector<Eigen::Vector2d>& outline,
-                         const std::vector<Disc>& discs);
+/// True if the polygon `outline` (world frame, closed) overlaps any disc: the disc's centre
+/// inside the polygon, or an edge closer to the centre than the radius.
+bool polygonTouchesDiscs(const wheelchair_core::Polygon& outline, const std::vector<Disc>& discs);
 
 }  // namespace wheelchair_sim

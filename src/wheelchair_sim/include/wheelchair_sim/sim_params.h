@@ -1,10 +1,15 @@
 // The simulator's own parameters (what the chair's YAML does not say: integration rate,
-// disturbances, sensor models). One flat YAML, config/sim.yaml; every key can be
-// overridden by a ROS private parameter of the same name in the nodelet.
+// disturbances, sensor models). One parameter pattern (wheelchair_core/config.h): defaults here
+// (the paper's ideal model), validate(), the keys in readSimParams; config/sim.yaml (a
+// realistic chair) is read with them, and the nodelet reads the same keys as private
+// parameters over it.
 #pragma once
 
-#include <cstdint>
 #include <string>
+
+namespace wheelchair_core {
+class ConfigReader;
+}
 
 namespace wheelchair_sim {
 
@@ -31,41 +36,16 @@ struct SimParams {
   double odom_track_error = 0.0;         ///< relative error of the assumed half track b
   double odom_noise = 0.0;               ///< random wheel-travel error [m per sqrt(m)]
   int seed = 1;                          ///< seed of every random generator of the run
+
+  /// "" if usable, else every problem, each naming its key.
+  std::string validate() const;
 };
 
-/// Calls visit(name, value&) for every field, so the YAML loader and the ROS parameter
-/// reader share one list of names.
-template <typename Visitor>
-void forEachParam(SimParams& p, Visitor&& visit) {
-  visit("physics_rate", p.physics_rate);
-  visit("rolling_resistance", p.rolling_resistance);
-  visit("resistance_smoothing", p.resistance_smoothing);
-  visit("torque_limit", p.torque_limit);
-  visit("brake_torque", p.brake_torque);
-  visit("slip_noise", p.slip_noise);
-  visit("laser_enabled", p.laser_enabled);
-  visit("laser_rate", p.laser_rate);
-  visit("laser_beams", p.laser_beams);
-  visit("laser_fov", p.laser_fov);
-  visit("laser_range_min", p.laser_range_min);
-  visit("laser_range_max", p.laser_range_max);
-  visit("laser_range_noise", p.laser_range_noise);
-  visit("odom_rate", p.odom_rate);
-  visit("odom_radius_error_right", p.odom_radius_error_right);
-  visit("odom_radius_error_left", p.odom_radius_error_left);
-  visit("odom_track_error", p.odom_track_error);
-  visit("odom_noise", p.odom_noise);
-  visit("seed", p.seed);
-}
+/// Every key above, by its member's name.
+void readSimParams(wheelchair_core::ConfigReader& reader, SimParams& params);
 
-/// Reads a flat YAML file; missing keys keep their defaults, unknown keys are an error.
-/// Throws std::runtime_error naming the file and the key. The result is validated.
+/// Reads and validates a YAML file of these keys; missing keys keep their defaults. Throws
+/// wheelchair_core::ConfigError naming the file and the unknown, mistyped or invalid key.
 SimParams loadSimParams(const std::string& yaml_path);
-
-/// Throws std::invalid_argument naming the first bad value.
-void validate(const SimParams& params);
-
-/// config/sim.yaml of this package (source tree, else install space).
-std::string defaultSimParamsPath();
 
 }  // namespace wheelchair_sim

@@ -2,6 +2,8 @@
 // (Simulator), wheel-encoder odometry and the laser, each sensor on its own schedule.
 #pragma once
 
+#include <wheelchair_core/laser_scan.h>
+#include <wheelchair_core/pose2d.h>
 #include <wheelchair_sim/laser_simulator.h>
 #include <wheelchair_sim/simulator.h>
 #include <wheelchair_sim/wheel_odometry.h>
@@ -12,8 +14,8 @@ namespace wheelchair_sim {
 
 /// What became due during one advance().
 struct SensorOutputs {
-  bool odometry_due = false;       ///< publish /odom, tf and ground truth now
-  std::optional<Scan> scan;        ///< a new laser scan, taken at the new time
+  bool odometry_due = false;                         ///< publish /odom, tf and ground truth now
+  std::optional<wheelchair_core::LaserScan2D> scan;  ///< a new scan, stamped the new time
   bool collision_started = false;  ///< the chair hit something during this advance
 };
 
@@ -37,9 +39,9 @@ class SimulatedChair {
   SensorOutputs advance(double dt);
 
   /// Moves the chair, the odometry does not notice (kidnapping). False if the pose collides.
-  bool teleport(double x, double y, double yaw);
+  bool teleport(const wheelchair_core::Pose2D& pose);
   /// Moves the chair and restarts the odometry at the identity. False if the pose collides.
-  bool reset(double x, double y, double yaw);
+  bool reset(const wheelchair_core::Pose2D& pose);
 
   Simulator& simulator() { return sim_; }
   const Simulator& simulator() const { return sim_; }

@@ -3,8 +3,10 @@
 // footprint collisions against the ground-truth grid. Time is injected: step(dt).
 #pragma once
 
+#include <wheelchair_core/kinematics.h>
+#include <wheelchair_core/pose2d.h>
 #include <wheelchair_description/model.h>
-#include <wheelchair_sim/footprint_checker.h>
+#include <wheelchair_sim/body_contact.h>
 #include <wheelchair_sim/obstacle_discs.h>
 #include <wheelchair_sim/sim_params.h>
 #include <wheelchair_sim/wheel_plant.h>
@@ -32,27 +34,28 @@ class Simulator : public WheelPlant {
   /// While in collision the chair is held at rest.
   void step(double dt);
 
-  /// Puts the chair at rest with its axle centre at (x, y), heading yaw, and clears the
-  /// collision flag. Returns false (and leaves everything unchanged) if that pose collides.
-  /// Wheel angles are kept (the encoders do not see a teleport).
-  bool teleport(double x, double y, double yaw);
+  /// Puts the chair at rest with its axle centre (base_link) at `pose` and clears the
+  /// collision flag. Returns false (and leaves everything unchanged) if that pose is not finite
+  /// or collides. Wheel angles are kept (the encoders do not see a teleport).
+  bool teleport(const wheelchair_core::Pose2D& pose);
 
   /// Sets the full state x of eq. 15 (e.g. an initial speed); keeps time and collision flag.
   void setState(const wheelchair_description::State& x) { x_ = x; }
 
   double time() const { return time_; }
   const wheelchair_description::State& state() const { return x_; }
-  /// Ground-truth pose of base_link (axle centre P) in the world: (x, y, theta in [-pi, pi]).
-  /// The chair starts at rest at the origin.
-  Eigen::Vector3d pose() const;
-  /// Forward speed of P and yaw rate: (v, omega).
-  Eigen::Vector2d velocity() const;
+  /// Ground-truth pose of base_link (axle centre P) in the world, yaw in [-pi, pi]. The chair
+  /// starts at rest at the origin.
+  wheelchair_core::Pose2D pose() const;
+  /// Forward speed of P and yaw rate (eq. 10-11 of the wheel speeds).
+  wheelchair_core::BodyTwist velocity() const;
   /// Torques that reached the wheels in the last RK4 step [right, left] (after limit and
   /// resistances).
   const Eigen::Vector2d& appliedTorques() const { return applied_; }
   bool collided() const { return collided_; }
-  /// Does the footprint at `pose` overlap the map or an obstacle disc present now?
-  bool collides(const Eigen::Vector3d& pose) const;
+  /// Does the footprint with base_link at `pose` overlap the map or an obstacle disc present
+  /// now?
+  bool collides(const wheelchair_core::Pose2D& pose) const;
   /// Obstacles that are not in the map (people); the laser sees them too.
   ObstacleDiscs& obstacles() { return obstacles_; }
   const ObstacleDiscs& obstacles() const { return obstacles_; }
@@ -61,11 +64,11 @@ class Simulator : public WheelPlant {
  private:
   void integrate(double h);
   void addSlip(const Eigen::Vector2d& wheel_increment);
-  bool touchesDisc(const Eigen::Vector3d& pose) const;
+  bool touchesDisc(const wheelchair_core::Pose2D& pose) const;
 
   wheelchair_description::ChairParams chair_;
   SimParams params_;
-  std::optional<FootprintChecker> checker_;
+  std::optional<BodyContact> contact_;
   ObstacleDiscs obstacles_;
   wheelchair_description::State x_ = wheelchair_description::State::Zero();
   Eigen::Vector2d command_ = Eigen::Vector2d::Zero();

@@ -1,7 +1,10 @@
-// Dead reckoning from the wheel encoders as a base driver would do it, with the systematic
-// errors of a mis-calibrated chair (wrong radii, wrong track) and random wheel-travel errors.
+// Dead reckoning from the wheel encoders as a base driver would do it (wheelchair_core's eq.
+// 10-11 and exact arc), with the systematic errors of a mis-calibrated chair (each wheel's own
+// wrong radius, a wrong track) and random wheel-travel errors.
 #pragma once
 
+#include <wheelchair_core/kinematics.h>
+#include <wheelchair_core/pose2d.h>
 #include <wheelchair_description/chair_params.h>
 #include <wheelchair_sim/sim_params.h>
 
@@ -20,18 +23,18 @@ class WheelOdometry {
                 uint64_t seed);
 
   /// Starts dead reckoning at `pose` with the current encoder angles [right, left].
-  void reset(const Eigen::Vector3d& pose, const Eigen::Vector2d& wheel_angles);
+  void reset(const wheelchair_core::Pose2D& pose, const Eigen::Vector2d& wheel_angles);
 
   /// Integrates the encoder angles read `dt` seconds after the previous ones.
   void update(const Eigen::Vector2d& wheel_angles, double dt);
 
-  const Eigen::Vector3d& pose() const { return pose_; }          ///< (x, y, theta) in odom
-  const Eigen::Vector2d& velocity() const { return velocity_; }  ///< (v, omega)
+  const wheelchair_core::Pose2D& pose() const { return pose_; }  ///< in odom
+  const wheelchair_core::BodyTwist& velocity() const { return velocity_; }
 
  private:
   double radius_right_, radius_left_, half_track_, noise_;
-  Eigen::Vector3d pose_ = Eigen::Vector3d::Zero();
-  Eigen::Vector2d velocity_ = Eigen::Vector2d::Zero();
+  wheelchair_core::Pose2D pose_;
+  wheelchair_core::BodyTwist velocity_;
   Eigen::Vector2d last_angles_ = Eigen::Vector2d::Zero();
   std::mt19937_64 rng_;
 };

@@ -1,5 +1,5 @@
 // The torque input of the simulated chair, kept behind a small interface so that the ROS
-// topic today and an emulated CAN motor controller later can drive the same simulator.
+// topic and the emulated CAN motor controller (motor_plant_adapter.h) drive the same simulator.
 #pragma once
 
 #include <Eigen/Core>

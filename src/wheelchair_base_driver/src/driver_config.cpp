@@ -1,0 +1,34 @@
+#include <wheelchair_base_driver/driver_config.h>
+#include <wheelchair_can/protocol.h>
+#include <wheelchair_core/config.h>
+
+namespace wheelchair_base_driver {
+
+std::string DriverConfig::validate() const {
+  return wheelchair_core::ConfigChecks()
+      .positive("wheel_radius", geometry.wheel_radius)
+      .positive("half_track", geometry.half_track)
+      .positive("counts_per_rev", geometry.counts_per_rev)
+      .positive("max_wheel_rate", geometry.max_wheel_rate)
+      .positive("max_torque", max_torque)
+      .check(!(max_torque > wheelchair_can::protocol::kMaxEncodableTorque),
+             "max_torque exceeds the protocol's 327.67 N m")
+      .positive("command_period (1 / command_rate)", command_period)
+      .positive("heartbeat_period", heartbeat_period)
+      .positive("command_timeout", command_timeout)
+      .positive("controller_timeout", controller_timeout)
+      .result();
+}
+
+void readDriverConfig(wheelchair_core::ConfigReader& reader, DriverConfig& config) {
+  reader.read("counts_per_rev", config.geometry.counts_per_rev);
+  reader.read("max_wheel_rate", config.geometry.max_wheel_rate);
+  reader.read("max_torque", config.max_torque);
+  double command_rate = 1.0 / config.command_period;
+  reader.read("command_rate", command_rate);
+  config.command_period = 1.0 / command_rate;
+  reader.read("command_timeout", config.command_timeout);
+  reader.read("controller_timeout", config.controller_timeout);
+}
+
+}  // namespace wheelchair_base_driver
