@@ -1,7 +1,6 @@
 #include "display_node.h"
 
-#include <wheelchair_description/chair_params.h>
-#include <wheelchair_description/package_paths.h>
+#include <wheelchair_description/chair_file.h>
 #include <wheelchair_display/places_file.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/shared_tf.h>
@@ -54,9 +53,7 @@ DisplayNode::DisplayNode(const DisplayNodeConfig& config)
       drive_source_(nh_, drive_, places_),
       announcer_(config.display.speak_highlight),
       speaker_(config.display.speech, config.speech_wav_dir) {
-  const std::string chair_file = config.chair_file.empty()
-                                     ? wheelchair_description::chairParamsPathFromRos()
-                                     : config.chair_file;
+  const std::string chair_file = wheelchair_description::resolveChairFile(config.chair_file);
   footprint_ = wheelchair_description::loadChairParams(chair_file).footprint;
   goal_pub_ = nh_.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 1);
   stop_pub_ = nh_.advertise<std_msgs::Empty>("user_stop", 1);
