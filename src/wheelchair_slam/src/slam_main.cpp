@@ -6,8 +6,8 @@
 #include <sys/resource.h>
 #include <wheelchair_core/map_io.h>
 
-#include <wheelchair_mapping/map_consistency.h>
 #include <wheelchair_logs/progress_bar.h>
+#include <wheelchair_mapping/map_consistency.h>
 #include <wheelchair_slam/graph_slam.h>
 #include <wheelchair_slam/odometry_log.h>
 #include <wheelchair_slam/slam_map.h>
