@@ -11,26 +11,12 @@ import rospy
 import rostest
 from wheelchair_msgs.msg import SafetyStatus
 
-from wheelchair_test.harness import Rider, describe_stop
+from wheelchair_test.harness import Rider, describe_stop, point_ahead
 
 START = (3.0, 2.2, 0.0)  # living_centre
 GOAL = "kitchen_door"
 AHEAD = 1.9  # [m] along the plan from the chair's axle centre (1.6 m in front of its front)
 RADIUS = 0.15  # [m] a person seen from above
-
-
-def point_ahead(plan, x, y, distance):
-    """The point `distance` along the plan from the vertex nearest to (x, y)."""
-    points = [(p.pose.position.x, p.pose.position.y) for p in plan.poses]
-    i = min(range(len(points)), key=lambda k: math.hypot(points[k][0] - x, points[k][1] - y))
-    walked = 0.0
-    for a, b in zip(points[i:], points[i + 1:]):
-        step = math.hypot(b[0] - a[0], b[1] - a[1])
-        if walked + step >= distance:
-            f = (distance - walked) / step
-            return a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])
-        walked += step
-    return None
 
 
 class Person(unittest.TestCase):

@@ -138,13 +138,25 @@ double visibleLength(const std::vector<Eigen::Vector2d>& ahead,
   if (why == nullptr) why = &ignored;
   *why = nullptr;
   constexpr double kStep = 0.05;
+  // The path starts under the chair and passes the laser's face, where a few cm of pose jitter
+  // between the chair's pose and the laser's (tf at two stamps) turn "just ahead" into
+  // "behind": the check starts at the first point `from` beyond the axle and kFace ahead of
+  // the laser.
+  constexpr double kFace = 0.15;
+  const wheelchair_core::Pose2D to_laser = wheelchair_core::inverse(laser_pose);
+  bool started = false;
   double walked = 0.0;
   for (size_t i = 0; i + 1 < ahead.size(); ++i) {
     const Eigen::Vector2d a = ahead[i], d = ahead[i + 1] - ahead[i];
     const double length = d.norm();
     for (double s = 0.0; s < length; s += kStep) {
       const Eigen::Vector2d p = a + d * (s / length);
-      if ((p - ahead.front()).norm() < from) continue;  // under the chair
+      if (!started) {
+        if ((p - ahead.front()).norm() < from ||
+            wheelchair_core::transformPoint(to_laser, p).x() < kFace)
+          continue;
+        started = true;
+      }
       if (!sees(scan, laser_pose, p, tolerance, why)) return walked + s;
     }
     walked += length;

@@ -207,6 +207,9 @@ TEST(ProtectiveFieldSupervisor, APathVertexJustBehindTheChairDoesNotBlindIt) {
   s.onPose(10.0, Pose2D{2.06, 2.03, 0.0});
   s.onLaserView(openScan(30.0), Pose2D{2.34, 2.03, 0.0});
   EXPECT_EQ(s.speedLimit().speed, INFINITY) << s.speedLimit().detail;
+  // The laser's pose 4 cm ahead of where the chair's says (two tf stamps while driving).
+  s.onLaserView(openScan(30.0), Pose2D{2.38, 2.03, 0.0});
+  EXPECT_EQ(s.speedLimit().speed, INFINITY) << s.speedLimit().detail;
 }
 
 TEST(ProtectiveFieldSupervisor, AStraightPathWithFewVerticesIsSeenFromItsMiddle) {

@@ -44,6 +44,21 @@ def describe_stop(status):
     return f"{status.sentence} ({status.detail})" if status.detail else status.sentence
 
 
+def point_ahead(plan, x, y, distance):
+    """The point `distance` [m] along the plan (nav_msgs/Path) from its vertex nearest to (x, y),
+    or None if the plan is shorter."""
+    points = [(p.pose.position.x, p.pose.position.y) for p in plan.poses]
+    i = min(range(len(points)), key=lambda k: math.hypot(points[k][0] - x, points[k][1] - y))
+    walked = 0.0
+    for a, b in zip(points[i:], points[i + 1:]):
+        step = math.hypot(b[0] - a[0], b[1] - a[1])
+        if walked + step >= distance:
+            f = (distance - walked) / step
+            return a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])
+        walked += step
+    return None
+
+
 class Mark(NamedTuple):
     """A `since` for the questions of Rider (Rider.mark()): the simulated time and how long
     each log was. A log is cut at that position, not at that time: the test's clock moves in
