@@ -7,15 +7,12 @@ chair's front + its controlled stop, integrated here from the chair's stopping f
 The chair stops for the person with the reason told to the rider, and the simulator's contact
 check stays clear. With the old fixed 1.2 m field the person at 0.8 and 1.5 m/s is first seen
 too late and the chair runs into them."""
-import math
 import sys
 import unittest
 
 import rospy
 import rostest
-from wheelchair_msgs.msg import SafetyStatus
-
-from wheelchair_test.harness import Rider, describe_stop, point_ahead
+from wheelchair_test.harness import Rider, point_ahead
 
 START = (1.5, 5.0, 0.0)  # room a, facing the corridor
 GOAL = (22.0, 5.0, 0.0)  # room b, 20.5 m straight ahead
@@ -56,20 +53,7 @@ class Field(unittest.TestCase):
         edge = stop_zone(v, field)
         person = point_ahead(plan, x, y, edge - INSIDE + RADIUS)
         self.assertIsNotNone(person, "plan too short for the test")
-        t_person = s.mark()
-        self.assertTrue(s.add_obstacle(person[0], person[1], RADIUS, 0.0).success)
-        self.assertTrue(s.wait(lambda: s.first_stop(t_person), 30.0),
-                        "no safety stop: " + s.describe(t_person))
-        _, stop = s.first_stop(t_person)
-        self.assertEqual(stop.reason, SafetyStatus.OBSTACLE, describe_stop(stop))
-        self.assertIn("in the way", stop.sentence)
-        self.assertTrue(s.wait(s.at_rest, 60.0), "still moving: " + s.describe(t_person))
-        s.sim_sleep(1.0)
-        self.assertFalse(s.collided, "the chair touched the person: " + s.describe(t_person))
-        _, fx, fy, fyaw, _, _ = s.truth
-        front = (fx + field["front_offset"] * math.cos(fyaw),
-                 fy + field["front_offset"] * math.sin(fyaw))
-        gap = math.hypot(person[0] - front[0], person[1] - front[1]) - RADIUS
+        t_person, stop, gap = s.stops_for_person(self, person, RADIUS, field["front_offset"])
         self.assertGreater(gap, 0.0, "no gap left")
         self.assertTrue(s.wait(lambda: s.announced("in the way", t_person), 10.0),
                         "the rider was not told: " + s.describe(t_person))

@@ -3,6 +3,8 @@
 #include <wheelchair_safety/protective_field.h>
 #include <wheelchair_safety/safety_supervisor.h>
 
+#include "safety_fixtures.h"
+
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -13,6 +15,9 @@ using namespace wheelchair_safety;
 using wheelchair_core::LaserScan2D;
 using wheelchair_core::OccupancyMap;
 using wheelchair_core::Pose2D;
+using wheelchair_safety_test::corridorMap;
+using wheelchair_safety_test::personAt;
+using wheelchair_safety_test::straightPath;
 
 namespace {
 
@@ -31,33 +36,11 @@ double simulatedStop(const ProtectiveField& f, double v) {
   return s;
 }
 
-OccupancyMap freeMap() {
-  OccupancyMap map;
-  map.width = 200;
-  map.height = 80;
-  map.data.assign(map.width * map.height, wheelchair_core::kFree);
-  return map;
-}
-
-std::vector<Pose2D> straightPath() {
-  std::vector<Pose2D> path;
-  for (double x = 1.0; x <= 9.5; x += 0.05) path.push_back({x, 2.0, 0.0});
-  return path;
-}
-
-/// A person's front as the laser sees it from -x: an arc of radius 0.15 m centred at (x, y).
-std::vector<Eigen::Vector2d> personAt(double x, double y) {
-  std::vector<Eigen::Vector2d> returns;
-  for (double a = -1.0; a <= 1.0; a += 0.2)
-    returns.emplace_back(x - 0.15 * std::cos(a), y + 0.15 * std::sin(a));
-  return returns;
-}
-
 /// Healthy data at t = 10 s, chair at (2, 2) heading +x on the path, driving at `speed`.
 SafetySupervisor driving(double speed) {
   SafetySupervisor s;
-  s.onMap(freeMap());
-  s.onPath(straightPath());
+  s.onMap(corridorMap(false));
+  s.onPath(straightPath(9.5));
   s.onLocalization(10.0, true, Eigen::Matrix3d::Identity() * 1e-3, "");
   s.onPose(10.0, Pose2D{2.0, 2.0, 0.0});
   s.onSpeed(10.0, speed);
