@@ -60,10 +60,10 @@ double distanceAlongCorridor(const std::vector<Eigen::Vector2d>& ahead,
                              const Eigen::Vector2d& point, double half_width);
 /// How far along `ahead` [m] the laser (its scan and its pose, in the frame of `ahead`) sees
 /// the path's centre line, checked where it is `from` [m] or more from ahead[0] (the axle: what
-/// lies under the chair is not the laser's) and 0.15 m ahead of the laser: the first point (0.05 m steps) outside the field of
-/// view, beyond range_max, behind a return (more than `tolerance`) or along an unusable beam ends
-/// it. Returns the length of `ahead` if it sees it all. `why` (optional): what ended it, for the
-/// log (null if nothing).
+/// lies under the chair is not the laser's) and 0.15 m ahead of the laser: the first point (0.05 m
+/// steps) outside the field of view, beyond range_max, behind a return (more than `tolerance`) or
+/// along an unusable beam ends it. Returns the length of `ahead` if it sees it all. `why`
+/// (optional): what ended it, for the log (null if nothing).
 double visibleLength(const std::vector<Eigen::Vector2d>& ahead,
                      const wheelchair_core::LaserScan2D& scan,
                      const wheelchair_core::Pose2D& laser_pose, double from, double tolerance,
