@@ -110,7 +110,7 @@ def run_protocol(args, out, logs):
         if args.cpu_quota:
             from wheelchair_test.harness.cpu_quota import CpuQuota
 
-            quota = CpuQuota(procs.get("chair").popen.pid, args.cpu_quota)
+            quota = CpuQuota(procs.get("chair").pid, args.cpu_quota)
             print(f"chair process confined to {args.cpu_quota:g} % of one core", flush=True)
         rospy.init_node("table2_report", disable_signals=True)
         runner = protocol.Table2Runner(wall_scale=args.wall_scale)
