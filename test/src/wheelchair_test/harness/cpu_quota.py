@@ -4,21 +4,39 @@ gives the deployed unit). As root; the whole process (every thread) moves into a
 own and back out on close(). stats() says how often the quota throttled it and how much CPU it
 used (cpuacct, when mounted), so a report can state the margin."""
 import os
+import subprocess
 import time
 
-CPU = "/sys/fs/cgroup/cpu"
-CPUACCT = "/sys/fs/cgroup/cpuacct"
+SYS = "/sys/fs/cgroup"
+OWN = "/run/wheelchair_cgroup"  # where it mounts the hierarchies if /sys has none
+
+
+def _hierarchy(controller):
+    """The cgroup v1 hierarchy of `controller`: /sys/fs/cgroup/<controller>, or, where /sys has
+    no cgroups (`ip netns exec` mounts a fresh sysfs), the same hierarchy mounted again under
+    /run (as root). None if the kernel has no such v1 controller."""
+    path = os.path.join(SYS, controller)
+    if os.path.isdir(path):
+        return path
+    path = os.path.join(OWN, controller)
+    if not os.path.exists(os.path.join(path, "cgroup.procs")):
+        os.makedirs(path, exist_ok=True)
+        if subprocess.run(["mount", "-t", "cgroup", "-o", controller, "cgroup", path],
+                          capture_output=True).returncode != 0:
+            return None
+    return path
 
 
 class CpuQuota:
     def __init__(self, pid, percent, name=None, period_us=100000):
-        if not os.path.isdir(CPU):
-            raise RuntimeError(f"no cgroup v1 cpu controller at {CPU}")
+        cpu, cpuacct = _hierarchy("cpu"), _hierarchy("cpuacct")
+        if cpu is None:
+            raise RuntimeError("no cgroup v1 cpu controller (as root?)")
         self.pid, self.percent = pid, percent
         self.name = name or f"wheelchair_quota_{os.getpid()}_{pid}"
-        self.dirs = [os.path.join(CPU, self.name)]
-        if os.path.isdir(CPUACCT) and os.path.realpath(CPUACCT) != os.path.realpath(CPU):
-            self.dirs.append(os.path.join(CPUACCT, self.name))
+        self.dirs = [os.path.join(cpu, self.name)]
+        if cpuacct and os.path.realpath(cpuacct) != os.path.realpath(cpu):
+            self.dirs.append(os.path.join(cpuacct, self.name))
         for d in self.dirs:
             os.makedirs(d, exist_ok=True)
         self._write("cpu.cfs_period_us", period_us)
