@@ -15,9 +15,11 @@ test/table2/flat_pairs.yaml (test/table2/table2_protocol.py), and writes into --
   logs/                one log per process
 Exit 0 when every run reached its goal and both means beat the paper, else 1.
 
---cpu-quota 15: the chair process confined to 15 % of one core (cgroup v1 cpu controller,
-cfs_quota_us 15000 of cfs_period_us 100000, as root; the deployed unit's CPUQuota=15%), the
-legacy-PC budget; runs.json and report.md then give the quota's throttling and the CPU used.
+--cpu-quota 15: the chair process confined to 15 % of one core (cgroup v1 cpu controller, as
+root; the deployed unit's CPUQuota=15%), the legacy-PC budget, in periods of --cpu-period-ms
+(default 10, the unit's CPUQuotaPeriodSec=10ms: with the default 100 ms period a burst of work
+uses the period's 15 ms and every thread then waits 85 ms, past the motor controller's 100 ms
+command watchdog); runs.json and report.md then give the quota's throttling and CPU used.
 """
 import argparse
 import json
@@ -110,8 +112,10 @@ def run_protocol(args, out, logs):
         if args.cpu_quota:
             from wheelchair_test.harness.cpu_quota import CpuQuota
 
-            quota = CpuQuota(procs.get("chair").pid, args.cpu_quota)
-            print(f"chair process confined to {args.cpu_quota:g} % of one core", flush=True)
+            quota = CpuQuota(procs.get("chair").pid, args.cpu_quota,
+                             period_us=int(args.cpu_period_ms * 1000))
+            print(f"chair process confined to {args.cpu_quota:g} % of one core "
+                  f"(period {args.cpu_period_ms:g} ms)", flush=True)
         rospy.init_node("table2_report", disable_signals=True)
         runner = protocol.Table2Runner(wall_scale=args.wall_scale)
         runner.check_processes = procs.check
@@ -191,6 +195,9 @@ def main():
     parser.add_argument("--bringup", help="bring-up file (default: chair_sim.yaml)")
     parser.add_argument("--cpu-quota", type=float, default=None, metavar="PERCENT",
                         help="confine the chair process to PERCENT of one core (root)")
+    parser.add_argument("--cpu-period-ms", type=float, default=10.0,
+                        help="the quota's period (cfs_period_us), the unit's CPUQuotaPeriodSec; "
+                             "100 (the kernel's and systemd's default) starves the motor watchdog")
     parser.add_argument("--no-snapshots", dest="snapshots", action="store_false")
     parser.add_argument("--no-kld-bench", dest="kld_bench", action="store_false")
     parser.add_argument("--kld-bench-timeout", type=float, default=2400.0)
