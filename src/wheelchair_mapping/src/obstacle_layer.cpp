@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace wheelchair_mapping {
@@ -87,9 +86,9 @@ void ObstacleLayer::update(size_t k, double l) {
 }
 
 void ObstacleLayer::decayTo(double stamp) {
-  if (!(stamp > last_stamp_)) return;
-  if (last_stamp_ > -1e299) {
-    const auto f = static_cast<float>(std::exp(-decay_rate_ * (stamp - last_stamp_)));
+  if (!(stamp > decay_stamp_)) return;
+  if (decay_stamp_ > -1e299) {
+    const auto f = static_cast<float>(std::exp(-decay_rate_ * (stamp - decay_stamp_)));
     size_t kept = 0;
     for (const size_t k : active_) {
       logodds_[k] *= f;
@@ -102,27 +101,16 @@ void ObstacleLayer::decayTo(double stamp) {
     }
     active_.resize(kept);
   }
-  last_stamp_ = stamp;
+  decay_stamp_ = stamp;
 }
 
 InsertResult ObstacleLayer::insert(const wheelchair_core::LaserScan2D& scan,
                                    const wheelchair_core::Pose2D& pose) {
   InsertResult result;
-  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw)) {
-    result.reason = "sensor pose is not finite";
-    return result;
-  }
-  result.reason = wheelchair_core::scanGeometryProblem(scan, 0);
+  result.reason = scanInsertProblem(scan, pose, 0, last_stamp_);
   if (!result.reason.empty()) return result;
-  if (scan.stamp < last_stamp_) {
-    std::ostringstream msg;
-    msg.precision(15);
-    msg << "time went backwards: scan at " << scan.stamp << " s after one at " << last_stamp_
-        << " s";
-    result.reason = msg.str();
-    return result;
-  }
-  decayTo(scan.stamp);
+  last_stamp_ = scan.stamp;
+  decayTo(scan.stamp);  // nothing if the layer was already decayed beyond it (decayTo(now))
   // One eq. (1) update per cell and scan (several beams reach a near cell): returns first, then
   // the cells the beams passed that no return of this scan marked.
   ++scan_count_;

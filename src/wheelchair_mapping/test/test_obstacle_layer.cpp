@@ -149,6 +149,8 @@ TEST_F(ObstacleLayerTest, RefusesBadScansAndSettings) {
   ObstacleLayer layer(room_, ObstacleLayerConfig{});
   EXPECT_FALSE(scan(layer, empty_, Pose2D{NAN, 1.0, 0.0}).inserted);
   ASSERT_TRUE(scan(layer, empty_, sensor_).inserted);
+  layer.decayTo(stamp_ + 0.5);  // the node decays to now between scans
+  EXPECT_TRUE(scan(layer, empty_, sensor_, 0.05).inserted) << "a scan stamped before now";
   stamp_ -= 1.0;
   const InsertResult old = scan(layer, empty_, sensor_);
   EXPECT_FALSE(old.inserted);

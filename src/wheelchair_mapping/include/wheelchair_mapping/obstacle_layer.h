@@ -49,12 +49,13 @@ class ObstacleLayer {
   /// configuration or map.
   ObstacleLayer(const wheelchair_core::OccupancyMap& static_map, const ObstacleLayerConfig& config);
 
-  /// Decays to the scan's stamp, then fuses it (eq. 1 per cell). Skips the whole scan, saying
-  /// why, for a non-finite pose, a geometry scanGeometryProblem refuses, a stamp older than the
-  /// last one, or no usable beam.
+  /// Decays to the scan's stamp (unless decayTo() went beyond it), then fuses it (eq. 1 per
+  /// cell). Skips the whole scan, saying why, for a non-finite pose, a geometry
+  /// scanGeometryProblem refuses, a stamp older than the last scan's, or no usable beam.
   InsertResult insert(const wheelchair_core::LaserScan2D& scan,
                       const wheelchair_core::Pose2D& sensor_pose);
-  /// Decays every cell to time `stamp` [s] (nothing if not later than the last stamp).
+  /// Decays every cell to time `stamp` [s] (nothing if not later than the last decay), e.g. to
+  /// now while no scan arrives; a later scan with an earlier stamp is still fused.
   void decayTo(double stamp);
 
   /// The layer on the static map's grid: kOccupied where an obstacle is, kFree where the
@@ -63,7 +64,7 @@ class ObstacleLayer {
   double probability(int ix, int iy) const;
   bool isObstacle(int ix, int iy) const;
   size_t obstacleCount() const;
-  double lastStamp() const { return last_stamp_; }
+  double lastStamp() const { return last_stamp_; }  ///< of the last fused scan
   const ObstacleLayerConfig& config() const { return config_; }
 
  private:
@@ -79,8 +80,9 @@ class ObstacleLayer {
   std::vector<uint32_t> updated_in_;  ///< the scan that last updated each cell
   uint32_t scan_count_ = 0;
   double logodds_hit_ = 0.0, logodds_pass_ = 0.0, logodds_obstacle_ = 0.0, logodds_max_ = 0.0;
-  double decay_rate_ = 0.0;  ///< [1/s]
-  double last_stamp_ = -1e300;
+  double decay_rate_ = 0.0;      ///< [1/s]
+  double last_stamp_ = -1e300;   ///< of the last fused scan
+  double decay_stamp_ = -1e300;  ///< time the cells were last decayed to
 };
 
 }  // namespace wheelchair_mapping
