@@ -150,6 +150,29 @@ TEST(OrderingUpdate, GivesTheSameSolutionsAsAFreshOrderingWithAboutItsFill) {
   }
 }
 
+namespace {
+
+// log u of `actual` equals `expected`'s to `tolerance` relative, for a goal at the corridor's
+// near end, with the same cells cut off; and u falls far below the smallest double there.
+void expectSameFarDownTheCorridor(const ConfigSpace& cs, const LogLdlt& expected,
+                                  const LogLdlt& actual, double tolerance) {
+  std::vector<double> a, b;
+  int gx = 12, gy = cs.height() / 2;
+  while (!cs.isFree(gx, gy)) ++gx;
+  expected.solve(cs.index(gx, gy), a);
+  actual.solve(cs.index(gx, gy), b);
+  double lowest = 0.0;
+  for (size_t k = 0; k < a.size(); ++k) {
+    ASSERT_EQ(std::isfinite(a[k]), std::isfinite(b[k])) << "cell " << k;
+    if (!std::isfinite(a[k])) continue;
+    lowest = std::min(lowest, a[k]);
+    ASSERT_NEAR(b[k], a[k], tolerance * std::max(1.0, std::abs(a[k]))) << "cell " << k;
+  }
+  EXPECT_LT(lowest, -700.0);  // far below the smallest double
+}
+
+}  // namespace
+
 // A 200 m corridor, where u falls far below the smallest double (log u < -700), with a niche
 // opened in the wall at the far end: the adapted factor keeps the tiny values' relative
 // precision (the fresh AMD factor's log u to 1e-12).
@@ -167,19 +190,7 @@ TEST(OrderingUpdate, KeepsRelativePrecisionFarDownALongCorridor) {
   const LogLdlt fresh(after, true);
   const LogLdlt derived(after, true, previous.get());
   ASSERT_TRUE(derived.orderingDerived());
-  std::vector<double> a, b;
-  int gx = 12, gy = after.height() / 2;
-  while (!after.isFree(gx, gy)) ++gx;
-  fresh.solve(after.index(gx, gy), a);
-  derived.solve(after.index(gx, gy), b);
-  double lowest = 0.0;
-  for (size_t k = 0; k < a.size(); ++k) {
-    ASSERT_EQ(std::isfinite(a[k]), std::isfinite(b[k])) << "cell " << k;
-    if (!std::isfinite(a[k])) continue;
-    lowest = std::min(lowest, a[k]);
-    ASSERT_NEAR(b[k], a[k], 1e-12 * std::max(1.0, std::abs(a[k]))) << "cell " << k;
-  }
-  EXPECT_LT(lowest, -700.0);  // far below the smallest double
+  expectSameFarDownTheCorridor(after, fresh, derived, 1e-12);
 }
 
 // ---- The factor adapted to blocked cells and changed conductances (LogLdlt::update) ----------
@@ -261,17 +272,5 @@ TEST(FactorUpdate, KeepsRelativePrecisionFarDownALongCorridor) {
   ASSERT_TRUE(factor.update(cs, change.cells));
   const ConfigSpace fresh_cs(narrowed, chair());
   const LogLdlt fresh(fresh_cs, true);
-  std::vector<double> a, b;
-  int gx = 12, gy = cs.height() / 2;
-  while (!cs.isFree(gx, gy)) ++gx;
-  fresh.solve(cs.index(gx, gy), a);
-  factor.solve(cs.index(gx, gy), b);
-  double lowest = 0.0;
-  for (size_t k = 0; k < a.size(); ++k) {
-    ASSERT_EQ(std::isfinite(a[k]), std::isfinite(b[k])) << "cell " << k;
-    if (!std::isfinite(a[k])) continue;
-    lowest = std::min(lowest, a[k]);
-    ASSERT_NEAR(b[k], a[k], 1e-10 * std::max(1.0, std::abs(a[k]))) << "cell " << k;
-  }
-  EXPECT_LT(lowest, -700.0);
+  expectSameFarDownTheCorridor(cs, fresh, factor, 1e-10);
 }
