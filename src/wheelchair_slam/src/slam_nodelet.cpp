@@ -103,6 +103,8 @@ class SlamNodelet : public nodelet::Nodelet {
     t.child_frame_id = config_.odom_frame;
     t.transform = wheelchair_ros::toTransformMsg(slam_->mapToOdom());
     std::lock_guard<std::mutex> lock(tf_mutex_);
+    if (t.header.stamp <= last_tf_stamp_) return;  // tf2 ignores (and warns about) a repeat
+    last_tf_stamp_ = t.header.stamp;
     tf_broadcaster_.sendTransform(t);
   }
 
@@ -172,6 +174,7 @@ class SlamNodelet : public nodelet::Nodelet {
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   std::mutex tf_mutex_;
+  ros::Time last_tf_stamp_;
   ros::Publisher map_pub_;
   ros::Subscriber scan_sub_;
   ros::ServiceServer save_srv_, place_srv_;
