@@ -36,6 +36,7 @@ void readSlamNodeConfig(wheelchair_core::ConfigReader& r, SlamNodeConfig& c) {
   r.read("tf_timeout", c.tf_timeout);
   r.read("transform_tolerance", c.transform_tolerance);
   r.read("tf_rate", c.tf_rate);
+  r.read("publish_tf", c.publish_tf);
   r.read("map_period", c.map_period);
   r.read("save_dir", c.save_dir);
   r.read("places_file", c.places_file);

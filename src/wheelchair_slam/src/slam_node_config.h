@@ -22,7 +22,9 @@ struct SlamNodeConfig {
   double tf_timeout = 0.2;           ///< [s] wait for the laser's odometry pose at a scan's stamp
   double transform_tolerance = 0.1;  ///< [s] map -> odom is stamped this far ahead
   double tf_rate = 20.0;             ///< [Hz] map -> odom repeated between scans
-  double map_period = 2.0;           ///< [s] /map at most this often (grid rebuilt off the scans)
+  /// false: no map -> odom (another localizer publishes it; bench/system's mapping case).
+  bool publish_tf = true;
+  double map_period = 2.0;  ///< [s] /map at most this often (grid rebuilt off the scans)
   /// Where ~save_map writes map.yaml/.pgm, trajectory.csv, graph.graph, graph.scans (read again
   /// at each call, so it can be set just before).
   std::string save_dir = "slam_map";

@@ -96,7 +96,7 @@ class SlamNodelet : public nodelet::Nodelet {
   }
 
   void publishMapToOdom() {
-    if (slam_->scans() == 0) return;
+    if (!config_.publish_tf || slam_->scans() == 0) return;
     geometry_msgs::TransformStamped t;
     t.header.frame_id = config_.map_frame;
     t.header.stamp = ros::Time::now() + ros::Duration(config_.transform_tolerance);
