@@ -17,15 +17,7 @@ namespace {
 
 using wheelchair_core::Pose2D;
 
-double maxError(const std::vector<Pose2D>& estimate, const std::vector<Pose2D>& truth) {
-  const Pose2D align = wheelchair_core::compose(truth[0], wheelchair_core::inverse(estimate[0]));
-  double worst = 0.0;
-  for (size_t i = 0; i < truth.size() && i < estimate.size(); ++i) {
-    const Pose2D p = wheelchair_core::compose(align, estimate[i]);
-    worst = std::max(worst, std::hypot(p.x - truth[i].x, p.y - truth[i].y));
-  }
-  return worst;
-}
+using wheelchair_slam_test::maxError;
 
 TEST(LiveSlam, ClosesTheLoopsOnItsWorkerAndTheGrownMapEqualsTheMapOfEveryScan) {
   std::mt19937 rng(11);

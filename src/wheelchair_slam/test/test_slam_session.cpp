@@ -16,10 +16,7 @@ namespace {
 
 using wheelchair_core::Pose2D;
 
-struct Drive {
-  std::vector<Pose2D> truth, odometry;
-  std::vector<wheelchair_core::LaserScan2D> scans;
-};
+using wheelchair_slam_test::Drive;
 
 /// `laps` laps around the block; the odometry starts at `odometry_start` (its own frame).
 Drive drive(int laps, unsigned seed, const Pose2D& odometry_start, double stamp0) {
