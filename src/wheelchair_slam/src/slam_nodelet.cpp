@@ -26,6 +26,7 @@
 #include <fstream>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 #include "slam_node_config.h"
 
@@ -37,27 +38,33 @@ class SlamNodelet : public nodelet::Nodelet {
     ros::NodeHandle& nh = getNodeHandle();
     ros::NodeHandle& pnh = getPrivateNodeHandle();
     config_ = wheelchair_ros::loadParameters<SlamNodeConfig>(pnh, readSlamNodeConfig);
+    // Everything that can refuse the nodelet comes before the first ROS object (a publisher
+    // destroyed after a refusal outlives the node handles it was made with).
+    std::optional<SavedSlam> saved;
+    if (!config_.continue_dir.empty()) {
+      try {
+        saved = loadSlam(config_.continue_dir, config_.slam);
+      } catch (const std::exception& e) {
+        const std::string problem = pnh.getNamespace() + ": continue_dir: " + e.what();
+        ROS_FATAL("%s", problem.c_str());  // as loadParameters reports a refusal
+        throw wheelchair_core::ConfigError(problem);
+      }
+    }
     map_pub_ = nh.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
     auto on_map = [this](const wheelchair_core::OccupancyMap& map) {
       map_pub_.publish(wheelchair_ros::toOccupancyGrid(map, config_.map_frame, ros::Time::now()));
     };
-    if (config_.continue_dir.empty()) {
+    if (!saved) {
       slam_ = std::make_unique<LiveSlam>(config_.slam, config_.map, config_.map_period, on_map);
     } else {
       std::optional<wheelchair_core::Pose2D> start;
       if (config_.start_pose.size() == 3)
         start = wheelchair_core::Pose2D{config_.start_pose[0], config_.start_pose[1],
                                         config_.start_pose[2]};
-      SavedSlam saved;
-      try {
-        saved = loadSlam(config_.continue_dir, config_.slam);
-      } catch (const std::exception& e) {
-        throw wheelchair_core::ConfigError(pnh.getNamespace() + "/continue_dir: " + e.what());
-      }
       NODELET_INFO("continuing the map in %s (%zu scans)", config_.continue_dir.c_str(),
-                   saved.scans.size());
+                   saved->scans.size());
       slam_ = std::make_unique<LiveSlam>(config_.slam, config_.map, config_.map_period, on_map,
-                                         std::move(saved), start);
+                                         std::move(*saved), start);
     }
     tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_, nh);
     scan_sub_ = nh.subscribe("scan", 5, &SlamNodelet::onScan, this);
