@@ -33,6 +33,10 @@
 namespace wheelchair_slam {
 
 class SlamNodelet : public nodelet::Nodelet {
+ public:
+  // The worker publishes /map: stop it before the publisher goes (members die in reverse).
+  ~SlamNodelet() override { slam_.reset(); }
+
  private:
   void onInit() override {
     ros::NodeHandle& nh = getNodeHandle();
