@@ -61,6 +61,9 @@ REFUSED = [
      "/hmi/places_file: cannot read '/nonexistent/home/places.yaml'"),
     ("wheelchair_bringup", "wheelchair", [f"{CONFIG}/bringup_minimal.yaml", "_hmii/scan_interval:=1.0"],
      "override ~hmii/scan_interval names no nodelet"),
+    # a bare file name is one of wheelchair_bringup's configs (mapping.yaml has no hmi)
+    ("wheelchair_bringup", "wheelchair", ["mapping.yaml", "_hmi/scan_interval:=1.0"],
+     "override ~hmi/scan_interval names no nodelet"),
 ]
 STARTUP = 30.0  # [s] on a loaded 2-core machine
 
