@@ -6,10 +6,10 @@
 #include <sys/resource.h>
 #include <wheelchair_core/map_io.h>
 
-#include <wheelchair_mapping/map_consistency.h>
+#include <wheelchair_logs/carmen_log.h>
 #include <wheelchair_logs/progress_bar.h>
+#include <wheelchair_mapping/map_consistency.h>
 #include <wheelchair_slam/graph_slam.h>
-#include <wheelchair_slam/odometry_log.h>
 #include <wheelchair_slam/slam_map.h>
 #include <wheelchair_slam/trajectory_io.h>
 #include <yaml-cpp/yaml.h>
@@ -156,7 +156,7 @@ int runWith(Reader& reader, const Args& a, const SlamConfig& config,
   std::vector<wheelchair_core::LaserScan2D> scans;
   std::vector<wheelchair_core::Pose2D> odometry, logged;
   std::vector<double> stamps;
-  for (OdometryScan s; reader.next(s);) {
+  for (wheelchair_logs::LogScan s; reader.next(s);) {
     if (!reader.problemsOfLastCall().empty()) {
       bar.breakLine();
       std::cerr << reader.problemsOfLastCall() << " (skipped)\n";
@@ -166,9 +166,9 @@ int runWith(Reader& reader, const Args& a, const SlamConfig& config,
       std::cerr << a.log << ":" << s.line << ": scan skipped: its stamp goes backwards\n";
       continue;
     }
-    if (!a.odometry_only) slam.addScan(s.scan, s.odometry);
-    odometry.push_back(s.odometry);
-    logged.push_back(s.logged_pose);
+    if (!a.odometry_only) slam.addScan(s.scan, s.odom_pose);
+    odometry.push_back(s.odom_pose);
+    logged.push_back(s.laser_pose);
     stamps.push_back(s.scan.stamp);
     scans.push_back(std::move(s.scan));
     bar.update(reader.progress(), std::to_string(scans.size()) + " scans, " +
@@ -279,7 +279,9 @@ int run(const Args& a) {
     BagOdometryReader reader(a.log, a.scan_topic, a.odom_frame);
     return runWith(reader, a, config, start);
   }
-  OdometryLogReader reader(a.log, odometrySourceFromName(a.odometry));
+  wheelchair_logs::CarmenOptions options;
+  options.odometry = wheelchair_logs::odometrySourceFromName(a.odometry);
+  wheelchair_logs::CarmenLogReader reader(a.log, options);
   return runWith(reader, a, config, start);
 }
 

@@ -2,9 +2,9 @@
 // repository; the test skips without it): wheelchair_slam on the raw odometry of
 // derived_intel_gt_rawodom.clf, judged by Kuemmerle et al.'s intel.relations.
 #include <gtest/gtest.h>
+#include <wheelchair_logs/carmen_log.h>
+#include <wheelchair_logs/relations.h>
 #include <wheelchair_slam/graph_slam.h>
-#include <wheelchair_slam/odometry_log.h>
-#include <wheelchair_slam/relations.h>
 
 #include <filesystem>
 
@@ -19,16 +19,17 @@ TEST(RealLogs, IntelRelationErrorBeatsGraphMappingsPublishedFigure) {
   if (!std::filesystem::exists(log) || !std::filesystem::exists(relations)) {
     GTEST_SKIP() << "no real logs at " << kData << " (../shared/data beside the repository)";
   }
-  OdometryLogReader reader(log, OdometrySource::kFields);
+  wheelchair_logs::CarmenLogReader reader(log);
   GraphSlam slam{SlamConfig()};
-  for (OdometryScan s; reader.next(s);) {
+  for (wheelchair_logs::LogScan s; reader.next(s);) {
     if (!slam.stamps().empty() && s.scan.stamp < slam.stamps().back()) continue;
-    slam.addScan(s.scan, s.odometry);
+    slam.addScan(s.scan, s.odom_pose);
   }
   slam.finish();
-  std::vector<TimedPose> trajectory;
+  std::vector<wheelchair_logs::TimedPose> trajectory;
   const auto poses = slam.trajectory();
   for (size_t i = 0; i < poses.size(); ++i) trajectory.push_back({slam.stamps()[i], poses[i]});
+  using namespace wheelchair_logs;
   const RelationErrors e = relationErrors(readRelations(relations), trajectory, 0.0, 1e-4);
   const ErrorSummary t = summarize(e.translational);
   RecordProperty("trans_error_mean_m", std::to_string(t.mean));
