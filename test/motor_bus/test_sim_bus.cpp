@@ -3,7 +3,7 @@
 // simulated wheels -> encoder frames -> driver's /odom. The expectation is the simulator's
 // ground truth (sim/ground_truth), independent of the driver's encoder odometry.
 // Room world of test/worlds: free for x in [-2, 8], y in [-3, 3]; chair at the origin facing +x.
-#include "ros_wait.h"
+#include <wheelchair_sim_testing/ros_wait.h>
 
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
