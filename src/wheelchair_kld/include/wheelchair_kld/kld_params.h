@@ -100,12 +100,34 @@ struct KldParams {
   /// Share of the echoes that must end within inlier_tolerance of an obstacle at the estimate.
   double localized_min_inliers = 0.7;
   double inlier_tolerance = 0.15;  ///< [m]
-  /// Global re-localization (a fresh uniform set) when the mean inlier share of the last
-  /// fit_window updates falls below fit_min_mean: the filter settled on a pose that does not
-  /// explain the scans (a wrong office after global localization, or a kidnapping the
-  /// short/long-term averages did not catch). A correct track stays above 0.9 here.
+  /// The fit of a scan at the estimate (the inlier share of the status, of MISFIT and of the
+  /// re-localization rule) is measured on every fit_beam_step-th beam: every beam (1) by default,
+  /// since the likelihood's every 6th beam leaves 30 echoes of a 180-beam scan, whose share
+  /// swings by 0.1-0.2 from scan to scan on a correct track (Intel).
+  int fit_beam_step = 1;
+  /// MISFIT status (not a re-localization) while the mean inlier share of the last fit_window
+  /// updates is below fit_min_mean. A second cluster must fit at least fit_min_mean to be a
+  /// genuine alternative (hypothesis_min_weight).
   int fit_window = 10;
   double fit_min_mean = 0.85;
+  /// Global re-localization (a fresh uniform set of relocalize_particles) when the scan
+  /// contradicts the map at the estimate for relocalize_updates updates in a row: of the echoes
+  /// that end where the map knows (near an obstacle, or in known-free space), fewer than
+  /// relocalize_max_fit end near an obstacle, with at least relocalize_min_echoes such echoes.
+  /// Echoes in unknown space or off the map are no evidence: a correct track looking into a
+  /// room the map never saw (FR101, 30 scans at 2-25 % plain inlier share) is not lost, while a
+  /// wrong pose in a mapped building puts its echoes in free space. Calibrated with replay on
+  /// the real logs (README): see the figures there. relocalize_updates 0 disables the rule.
+  double relocalize_max_fit = 0.45;
+  int relocalize_min_echoes = 20;
+  int relocalize_updates = 2;
+  /// The rule before issue 21 instead (a comparison in bench/kld): re-localize when the fit_window
+  /// mean falls below fit_min_mean. On real logs it threw correct tracks away (Intel: 5-7 times).
+  bool relocalize_on_mean_fit = false;
+  /// Particles of a re-localization's uniform set (global_particles is for the first global
+  /// localization): bounds that update (and its refine_steps) below one scan period; the
+  /// spread set still covers the office (bench/kld) and the kidnap tests recover.
+  int relocalize_particles = 20000;
 
   MotionNoise motion;
   MeasurementParams measurement;
