@@ -308,6 +308,25 @@ int replay(Reader& reader, const Args& a, bool bag) {
   for (double v : cpu_ms) mean_cpu += v / std::max<size_t>(1, cpu_ms.size());
   const double deg = 180.0 / M_PI;
   const int relocs = filter.relocalizations();
+  // Updates from the kidnapping until the status says "not localized", until the
+  // re-localization starts, and until the estimate is back within 0.5 m of the reference
+  // for good.
+  long noticed = -1, relocalized = -1, back = -1, updates = 0;
+  if (a.kidnap_at >= 0) {
+    const int relocs_before = kidnap_record > 0 ? records[kidnap_record - 1].relocalizations : 0;
+    for (size_t i = kidnap_record; i < records.size(); ++i) {
+      const auto& r = records[i];
+      updates += r.updated;
+      if (noticed < 0 && r.updated && !r.status.localized()) noticed = updates;
+      if (relocalized < 0 && r.relocalizations > relocs_before) relocalized = updates;
+      if (!r.reference) continue;
+      const bool near = std::hypot(r.laser.x - r.reference->x, r.laser.y - r.reference->y) < 0.5;
+      if (!near)
+        back = -1;
+      else if (back < 0)
+        back = updates;
+    }
+  }
   if (a.json) {
     std::printf(
         "{\"scans\": %zu, \"updates\": %zu, \"localized_share\": %.4f, \"relocalizations\": %d, "
@@ -328,6 +347,11 @@ int replay(Reader& reader, const Args& a, bool bag) {
           "\"relation_rot_std_deg\": %.3f",
           rel->relations, t.count, t.mean, t.std, r.mean * deg, r.std * deg);
     }
+    if (a.kidnap_at >= 0)
+      std::printf(
+          ", \"kidnap_noticed_update\": %ld, \"kidnap_relocalized_update\": %ld, "
+          "\"kidnap_back_update\": %ld",
+          noticed, relocalized, back);
     std::printf("}\n");
   } else {
     std::printf("scans %zu, filter updates %zu, localized %.1f %%, re-localizations %d\n",
@@ -349,29 +373,11 @@ int replay(Reader& reader, const Args& a, bool bag) {
                   t.count, rel->relations, t.mean, t.std, r.mean * deg, r.std * deg);
     }
   }
-  if (a.kidnap_at >= 0) {
-    // Updates from the kidnapping until the status says "not localized", until the
-    // re-localization starts, and until the estimate is back within 0.5 m of the reference
-    // for good.
-    long noticed = -1, relocalized = -1, back = -1, updates = 0;
-    const int relocs_before = kidnap_record > 0 ? records[kidnap_record - 1].relocalizations : 0;
-    for (size_t i = kidnap_record; i < records.size(); ++i) {
-      const auto& r = records[i];
-      updates += r.updated;
-      if (noticed < 0 && r.updated && !r.status.localized()) noticed = updates;
-      if (relocalized < 0 && r.relocalizations > relocs_before) relocalized = updates;
-      if (!r.reference) continue;
-      const bool near = std::hypot(r.laser.x - r.reference->x, r.laser.y - r.reference->y) < 0.5;
-      if (!near)
-        back = -1;
-      else if (back < 0)
-        back = updates;
-    }
+  if (a.kidnap_at >= 0 && !a.json)
     std::printf(
         "kidnapping after scan %ld: noticed (not localized) at update %ld, re-localization at "
         "update %ld, back within 0.5 m at update %ld (-1: never)\n",
         a.kidnap_at, noticed, relocalized, back);
-  }
   if (!a.plot.empty()) {
     wheelchair_logs::PlotPath est{"estimate", 220, 30, 30, {}, {}};
     wheelchair_logs::PlotPath refp{"reference", 30, 160, 30, {}, {}};
