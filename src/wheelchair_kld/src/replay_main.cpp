@@ -12,6 +12,7 @@
 #include <wheelchair_logs/progress_bar.h>
 #include <wheelchair_logs/reference.h>
 #include <wheelchair_logs/relations.h>
+#include <wheelchair_logs/splice.h>
 #include <wheelchair_logs/trajectory_plot.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 
@@ -161,24 +162,6 @@ Pose2D sensorPose(const LogScan& s, bool bag, const Args& a) {
   return bag ? wheelchair_core::between(s.odom_pose, s.laser_pose) : Pose2D{a.laser_x, 0, 0};
 }
 
-/// Scans 0..at, then from..end with their odometry moved to continue from scan `at`'s (the robot
-/// carried away while its odometry saw nothing).
-std::vector<LogScan> splice(std::vector<LogScan> scans, long at, long from) {
-  if (at < 0 || from < 0 || static_cast<size_t>(std::max(at, from)) >= scans.size())
-    throw std::invalid_argument("--kidnap-at / --kidnap-from outside the log's scans");
-  std::vector<LogScan> out(scans.begin(), scans.begin() + at + 1);
-  const Pose2D anchor = scans[at].odom_pose, source = scans[from].odom_pose;
-  const double dt = scans[at].scan.stamp + 0.2 - scans[from].scan.stamp;
-  for (size_t i = from; i < scans.size(); ++i) {
-    LogScan s = scans[i];
-    s.odom_pose =
-        wheelchair_core::compose(anchor, wheelchair_core::between(source, scans[i].odom_pose));
-    s.scan.stamp += dt;
-    out.push_back(std::move(s));
-  }
-  return out;
-}
-
 template <typename Reader>
 int replay(Reader& reader, const Args& a, bool bag) {
   const auto map_file = wheelchair_core::loadMap(a.map);
@@ -207,7 +190,8 @@ int replay(Reader& reader, const Args& a, bool bag) {
     }
     scans.push_back(std::move(s));
   }
-  if (a.kidnap_at >= 0) scans = splice(std::move(scans), a.kidnap_at, a.kidnap_from);
+  if (a.kidnap_at >= 0)
+    scans = wheelchair_logs::spliceKidnapping(scans, a.kidnap_at, a.kidnap_from);
   size_t kidnap_record = 0;
   for (size_t i = 0; i < scans.size(); ++i) {
     const LogScan& s = scans[i];

@@ -7,6 +7,7 @@
 #include <wheelchair_kld/kld_localizer.h>
 #include <wheelchair_logs/carmen_log.h>
 #include <wheelchair_logs/reference.h>
+#include <wheelchair_logs/splice.h>
 #include <wheelchair_mapping/bayes_mapper.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 
@@ -63,17 +64,8 @@ Replay replay(const std::vector<LogScan>& raw, const std::string& reference_log,
               const std::shared_ptr<const LocalizationMap>& map, const KldParams& params,
               long kidnap_at = -1, long kidnap_from = -1) {
   wheelchair_logs::ReferenceTrajectory reference(readLog(reference_log));
-  std::vector<LogScan> scans = raw;
-  if (kidnap_at >= 0) {
-    scans.assign(raw.begin(), raw.begin() + kidnap_at + 1);
-    for (size_t i = kidnap_from; i < raw.size(); ++i) {
-      LogScan s = raw[i];
-      s.odom_pose = wheelchair_core::compose(
-          raw[kidnap_at].odom_pose,
-          wheelchair_core::between(raw[kidnap_from].odom_pose, s.odom_pose));
-      scans.push_back(std::move(s));
-    }
-  }
+  const std::vector<LogScan> scans =
+      kidnap_at >= 0 ? wheelchair_logs::spliceKidnapping(raw, kidnap_at, kidnap_from) : raw;
   KldLocalizer filter(map, params, 1);
   Replay r;
   bool started = false;
@@ -114,16 +106,18 @@ bool haveData(const std::vector<std::string>& files) {
   return true;
 }
 
+const std::string kIntelRaw = kData + "/intel/derived_intel_gt_rawodom.clf";
+const std::string kIntelCorrected = kData + "/intel/intel-corrected.log.gz";
+
 // Issue 21: on build_map's Intel map the mean-fit rule (window 10 below 0.85) threw the correct
 // track away 5 times (1.28 m RMS); the contradiction rule keeps it (10.8 cm).
 TEST(RealLogs, IntelTrackIsNeverThrownAwayOnTheBuildMapMap) {
-  const std::string raw = kData + "/intel/derived_intel_gt_rawodom.clf";
-  const std::string corrected = kData + "/intel/intel-corrected.log.gz";
-  if (!haveData({raw, corrected}))
+  if (!haveData({kIntelRaw, kIntelCorrected}))
     GTEST_SKIP() << "no real logs at " << kData << " (../shared/data beside the repository)";
   const KldParams params;
-  const auto map = buildMap(corrected, params);
-  const auto scans = readLog(raw);
+  const auto map = buildMap(kIntelCorrected, params);
+  const auto scans = readLog(kIntelRaw);
+  const std::string& raw = kIntelRaw;
   const Replay r = replay(scans, raw, map, params);
   std::cout << "Intel: " << r.relocalizations << " re-localizations, " << r.position_rms << " m, "
             << r.heading_rms * 180 / M_PI << " deg RMS over " << r.matched << "\n";
@@ -140,13 +134,12 @@ TEST(RealLogs, IntelTrackIsNeverThrownAwayOnTheBuildMapMap) {
 // Two distant parts of the Intel drive spliced together (a kidnapping the odometry does not
 // see): noticed at once, the re-localization within a few updates.
 TEST(RealLogs, AKidnappingSplicedIntoIntelIsNoticedWithinTwoUpdates) {
-  const std::string raw = kData + "/intel/derived_intel_gt_rawodom.clf";
-  const std::string corrected = kData + "/intel/intel-corrected.log.gz";
-  if (!haveData({raw, corrected}))
+  if (!haveData({kIntelRaw, kIntelCorrected}))
     GTEST_SKIP() << "no real logs at " << kData << " (../shared/data beside the repository)";
   const KldParams params;
-  const auto map = buildMap(corrected, params);
-  const auto scans = readLog(raw);
+  const auto map = buildMap(kIntelCorrected, params);
+  const auto scans = readLog(kIntelRaw);
+  const std::string& raw = kIntelRaw;
   for (const auto& [at, from] : {std::pair<long, long>{300, 600}, {700, 150}}) {
     const Replay r = replay(scans, raw, map, params, at, from);
     std::cout << "splice " << at << " -> " << from << ": noticed at update " << r.noticed

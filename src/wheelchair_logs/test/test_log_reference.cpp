@@ -2,6 +2,7 @@
 // by stamp; the absolute error table against them.
 #include <gtest/gtest.h>
 #include <wheelchair_logs/reference.h>
+#include <wheelchair_logs/splice.h>
 
 #include <cmath>
 
@@ -54,6 +55,37 @@ TEST(Reference, PoseErrorsAreRmsMeanAndMaxOfPositionAndHeading) {
   const double wrap = 2 * M_PI - 6.2;
   EXPECT_NEAR(e.heading_max, std::max(0.1, wrap), 1e-12);
   EXPECT_NEAR(e.heading_mean, (0.1 + wrap) / 2, 1e-12);
+}
+
+}  // namespace
+}  // namespace wheelchair_logs
+
+namespace wheelchair_logs {
+namespace {
+
+// The spliced drive continues the odometry of the cut scan with the increments of the part it
+// jumps to: odometry sees no jump, the scans (and their reference poses) do.
+TEST(Splice, TheOdometryContinuesAcrossTheJumpWithTheLaterPartsIncrements) {
+  std::vector<LogScan> log;
+  for (int i = 0; i < 6; ++i) {
+    LogScan s;
+    s.scan.stamp = i;
+    s.odom_pose = {1.0 * i, 0.5 * i, 0.1 * i};
+    s.laser_pose = {10.0 + i, 0, 0};
+    log.push_back(s);
+  }
+  const auto out = spliceKidnapping(log, 1, 4);
+  ASSERT_EQ(out.size(), 4u);  // scans 0, 1, 4, 5
+  EXPECT_DOUBLE_EQ(out[2].laser_pose.x, 14.0);
+  EXPECT_NEAR(out[2].odom_pose.x, log[1].odom_pose.x, 1e-12) << "no jump in odometry";
+  EXPECT_NEAR(out[2].odom_pose.yaw, log[1].odom_pose.yaw, 1e-12);
+  const auto step = wheelchair_core::between(out[2].odom_pose, out[3].odom_pose);
+  const auto expected = wheelchair_core::between(log[4].odom_pose, log[5].odom_pose);
+  EXPECT_NEAR(step.x, expected.x, 1e-12);
+  EXPECT_NEAR(step.y, expected.y, 1e-12);
+  EXPECT_NEAR(step.yaw, expected.yaw, 1e-12);
+  EXPECT_GT(out[2].scan.stamp, out[1].scan.stamp);
+  EXPECT_THROW(spliceKidnapping(log, 1, 6), std::invalid_argument);
 }
 
 }  // namespace
