@@ -19,14 +19,26 @@
 using wheelchair_msgs::HmiState;
 using Strings = std::vector<std::string>;
 
+namespace {
+
+/// The latest /hmi/state and how many came, for as long as it lives.
+struct LatestState {
+  explicit LatestState(ros::NodeHandle& nh)
+      : sub(nh.subscribe<HmiState>("hmi/state", 10, [this](const HmiState::ConstPtr& m) {
+          msg = m;
+          ++count;
+        })) {}
+  HmiState::ConstPtr msg;
+  int count = 0;
+  ros::Subscriber sub;
+};
+
+}  // namespace
+
 TEST(HmiStateTopic, EveryStepOfAChoiceIsPublishedWithItsItemsAndHighlight) {
   ros::NodeHandle nh;
-  HmiState::ConstPtr state;
-  int received = 0;
-  auto sub = nh.subscribe<HmiState>("hmi/state", 10, [&](const HmiState::ConstPtr& m) {
-    state = m;
-    ++received;
-  });
+  LatestState latest(nh);
+  const HmiState::ConstPtr& state = latest.msg;
   ros::Publisher press = nh.advertise<std_msgs::Empty>("switch", 1);
   ASSERT_TRUE(waitFor([&] { return state && press.getNumSubscribers() > 0; }))
       << "no latched /hmi/state";
@@ -40,10 +52,10 @@ TEST(HmiStateTopic, EveryStepOfAChoiceIsPublishedWithItsItemsAndHighlight) {
   EXPECT_EQ(state->sentence, "kitchen?");
 
   // Not republished at 10 Hz: only when what it shows changes.
-  const int before = received;
+  const int before = latest.count;
   ros::WallDuration(1.0).sleep();
   ros::spinOnce();
-  EXPECT_LE(received - before, 1);
+  EXPECT_LE(latest.count - before, 1);
 
   press.publish(std_msgs::Empty());
   ASSERT_TRUE(waitFor([&] { return state->state == HmiState::SCANNING_PLACES; }));
@@ -72,9 +84,8 @@ TEST(HmiStateTopic, EveryStepOfAChoiceIsPublishedWithItsItemsAndHighlight) {
 
 TEST(HmiStateTopic, AGoalFromElsewhereIsDrivingNamedByItsPlaceOrNone) {
   ros::NodeHandle nh;
-  HmiState::ConstPtr state;
-  auto sub =
-      nh.subscribe<HmiState>("hmi/state", 10, [&](const HmiState::ConstPtr& m) { state = m; });
+  LatestState latest(nh);
+  const HmiState::ConstPtr& state = latest.msg;
   ros::Publisher goal_pub = nh.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 1);
   ASSERT_TRUE(waitFor([&] { return state && goal_pub.getNumSubscribers() > 0; }));
   geometry_msgs::PoseStamped goal;
@@ -98,9 +109,8 @@ TEST(HmiStateTopic, AGoalFromElsewhereIsDrivingNamedByItsPlaceOrNone) {
 
 TEST(HmiStateTopic, APlaceSavedInThePlacesFileIsOfferedWithoutARestart) {
   ros::NodeHandle nh;
-  HmiState::ConstPtr state;
-  auto sub =
-      nh.subscribe<HmiState>("hmi/state", 10, [&](const HmiState::ConstPtr& m) { state = m; });
+  LatestState latest(nh);
+  const HmiState::ConstPtr& state = latest.msg;
   ros::Publisher finished = nh.advertise<std_msgs::Empty>("hmi/finished", 1);
   ASSERT_TRUE(waitFor([&] { return state && finished.getNumSubscribers() > 0; }));
   finished.publish(std_msgs::Empty());  // the drive of the test before ends: scanning rooms
