@@ -10,7 +10,7 @@ PathBuilder& PathBuilder::straight(double length) {
   const Pose2D p0 = poses_.back();
   const int n = std::max(1, static_cast<int>(std::round(length / spacing_)));
   for (int i = 1; i <= n; ++i) {
-    const double s = length * i / n;
+    const double s = sign_ * length * i / n;
     poses_.push_back({p0.x + s * std::cos(p0.yaw), p0.y + s * std::sin(p0.yaw), p0.yaw});
   }
   return *this;
@@ -18,7 +18,8 @@ PathBuilder& PathBuilder::straight(double length) {
 
 PathBuilder& PathBuilder::arc(double radius, double angle) {
   const Pose2D p0 = poses_.back();
-  const double side = angle >= 0.0 ? 1.0 : -1.0;
+  // In reverse the heading turns left (angle > 0) about the centre on the right of the chair.
+  const double side = (angle >= 0.0 ? 1.0 : -1.0) * sign_;
   const Eigen::Vector2d centre(p0.x - side * radius * std::sin(p0.yaw),
                                p0.y + side * radius * std::cos(p0.yaw));
   const int n = std::max(1, static_cast<int>(std::round(std::abs(angle) * radius / spacing_)));
