@@ -87,6 +87,17 @@ void expectModelMatchesChair(const urdf::Model& model, const ChairParams& p) {
   EXPECT_DOUBLE_EQ(mount.position.y, p.laser_y);
   EXPECT_DOUBLE_EQ(mount.position.z, p.laser_z);
   EXPECT_NEAR(yawOf(mount), p.laser_yaw, 1e-12);
+  // The rear laser at its mount, looking behind.
+  const auto rear = model.getJoint("rear_laser_joint");
+  ASSERT_TRUE(rear);
+  EXPECT_EQ(rear->type, urdf::Joint::FIXED);
+  EXPECT_EQ(rear->parent_link_name, "base_link");
+  EXPECT_EQ(rear->child_link_name, "rear_laser");
+  const auto& rear_mount = rear->parent_to_joint_origin_transform;
+  EXPECT_DOUBLE_EQ(rear_mount.position.x, p.rear_laser_x);
+  EXPECT_DOUBLE_EQ(rear_mount.position.y, p.rear_laser_y);
+  EXPECT_DOUBLE_EQ(rear_mount.position.z, p.rear_laser_z);
+  EXPECT_NEAR(std::remainder(yawOf(rear_mount) - p.rear_laser_yaw, 2 * M_PI), 0.0, 1e-12);
   // Body + rider at P_c, d behind P, with M_T and I_T.
   const auto body = model.getJoint("body_joint");
   ASSERT_TRUE(body);
@@ -137,6 +148,8 @@ TEST(Urdf, GeneratedModelFollowsOtherChairs) {
     p.laser_y = u(rng) - 1.0;
     p.laser_z *= u(rng);
     p.laser_yaw = 3.0 * (u(rng) - 1.0);
+    p.rear_laser_x *= u(rng);
+    p.rear_laser_yaw = M_PI * u(rng);
     expectModelMatchesChair(parse(chairUrdf(p)), p);
   }
 }
@@ -145,7 +158,7 @@ TEST(Urdf, AllLinksHangFromBaseFootprint) {
   const urdf::Model model = parse(readFile(kCommittedUrdf));
   std::vector<urdf::LinkSharedPtr> links;
   model.getLinks(links);
-  EXPECT_EQ(links.size(), 8u);  // footprint, base, body, 2 wheels, 2 casters, laser
+  EXPECT_EQ(links.size(), 9u);  // footprint, base, body, 2 wheels, 2 casters, 2 lasers
   for (const auto& link : links) {
     int depth = 0;
     for (auto l = link; l->getParent(); l = l->getParent()) ++depth;
