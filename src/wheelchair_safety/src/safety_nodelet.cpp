@@ -69,6 +69,7 @@ class SafetyNodelet : public nodelet::Nodelet {
     subs_.push_back(nh.subscribe("map", 1, &SafetyNodelet::onMap, this));
     subs_.push_back(nh.subscribe("plan", 1, &SafetyNodelet::onPlan, this));
     subs_.push_back(nh.subscribe("scan", 5, &SafetyNodelet::onScan, this));
+    subs_.push_back(nh.subscribe("rear_scan", 5, &SafetyNodelet::onRearScan, this));
     subs_.push_back(nh.subscribe("kld_pose", 5, &SafetyNodelet::onEstimate, this));
     subs_.push_back(nh.subscribe("localization/status", 5, &SafetyNodelet::onLocalization, this));
     subs_.push_back(nh.subscribe("base_driver/status", 5, &SafetyNodelet::onDriver, this));
@@ -122,6 +123,33 @@ class SafetyNodelet : public nodelet::Nodelet {
     const auto returns = wheelchair_core::scanEndpoints(scan, laser_pose);
     std::lock_guard<std::mutex> lock(mutex_);
     supervisor_->onScan(msg->header.stamp.toSec(), returns);
+  }
+
+  /// The rear laser (it guards reverse motion): its returns in the map frame.
+  void onRearScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
+    std::vector<Eigen::Vector2d> returns;
+    if (!returnsInMap(*msg, returns)) return;  // the rear watchdog then runs out
+    std::lock_guard<std::mutex> lock(mutex_);
+    supervisor_->onRearScan(msg->header.stamp.toSec(), returns);
+  }
+
+  /// A scan's returns in the map frame (tf at the scan's stamp); false if tf has no transform.
+  bool returnsInMap(const sensor_msgs::LaserScan& msg, std::vector<Eigen::Vector2d>& returns) {
+    geometry_msgs::TransformStamped sensor_in_map;
+    try {
+      sensor_in_map = tf_buffer_->lookupTransform(map_frame_, msg.header.frame_id, msg.header.stamp,
+                                                  ros::Duration(0.05));
+    } catch (const tf2::TransformException& e) {
+      NODELET_WARN_THROTTLE(2.0, "%s scan skipped: no %s -> %s: %s", msg.header.frame_id.c_str(),
+                            map_frame_.c_str(), msg.header.frame_id.c_str(), e.what());
+      return false;
+    }
+    wheelchair_core::LaserScan2D scan = wheelchair_ros::fromLaserScanMsg(msg);
+    wheelchair_core::Pose2D sensor_pose;
+    if (wheelchair_ros::laserPose2D(sensor_in_map.transform, sensor_pose))
+      wheelchair_core::mirrorScanAngles(scan);  // mounted upside down
+    returns = wheelchair_core::scanEndpoints(scan, sensor_pose);
+    return true;
   }
 
   void onDriver(const diagnostic_msgs::DiagnosticStatus::ConstPtr& msg) {

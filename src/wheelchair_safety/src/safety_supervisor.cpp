@@ -43,17 +43,22 @@ const char* describe(StopReason reason) {
       return "the motor controller reports a fault";
     case StopReason::kUserStop:
       return "stopped by the rider";
+    case StopReason::kRearSensorSilent:
+      return "the sensor behind the chair is silent";
+    case StopReason::kObstacleBehind:
+      return "something is behind the chair";
   }
   return "unknown";
 }
 
-SafetySupervisor::SafetySupervisor(SafetyLimits limits) : limits_(limits) {}
+SafetySupervisor::SafetySupervisor(SafetyLimits limits) : limits_(limits), rear_(limits) {}
 
 void SafetySupervisor::onMap(const wheelchair_core::OccupancyMap& map) { map_ = map; }
 
 void SafetySupervisor::onPath(const std::vector<wheelchair_core::Pose2D>& path) {
   path_.clear();
   for (const auto& pose : path) path_.push_back(pose.position());
+  rear_.onPath(path);
 }
 
 void SafetySupervisor::onLocalization(double stamp, bool localized,
@@ -78,6 +83,12 @@ void SafetySupervisor::onScan(double stamp, const std::vector<Eigen::Vector2d>& 
   for (const auto& point : returns_in_map)
     if (point.allFinite() && inCorridorAhead(point) && !knownObstacleNear(point))
       ++unexpected_returns_;
+}
+
+void SafetySupervisor::onRearScan(double stamp,
+                                  const std::vector<Eigen::Vector2d>& returns_in_map) {
+  rear_.onScan(stamp, returns_in_map, pose_,
+               [this](const Eigen::Vector2d& p) { return knownObstacleNear(p); });
 }
 
 void SafetySupervisor::onDriverStatus(double stamp, bool fault, const std::string& detail) {
@@ -165,6 +176,8 @@ SafetyVerdict SafetySupervisor::evaluate(double now) const {
     return stopFor(StopReason::kCovarianceTooLarge, text, position ? xy_std : heading_std,
                    position ? limits_.max_position_std : limits_.max_heading_std);
   }
+  const SafetyVerdict behind = rear_.evaluate(now, pose_);
+  if (behind.stop) return behind;
   if (unexpected_returns_ >= limits_.min_obstacle_returns)
     return stopFor(StopReason::kUnexpectedObstacle,
                    std::to_string(unexpected_returns_) + " laser returns on the path ahead",

@@ -6,6 +6,7 @@
 
 #include <wheelchair_core/occupancy_map.h>
 #include <wheelchair_core/pose2d.h>
+#include <wheelchair_safety/rear_guard.h>
 #include <wheelchair_safety/safety_limits.h>
 
 #include <Eigen/Core>
@@ -26,6 +27,8 @@ enum class StopReason {
   kUnexpectedObstacle,
   kDriverFault,
   kUserStop,
+  kRearSensorSilent,  ///< the path backs up and the rear laser is silent (rear_guard.h)
+  kObstacleBehind,    ///< something unmapped behind the chair on the path it backs along
 };
 
 /// Words for the rider: short, no frames or coordinates (e.g. "the laser scanner is silent").
@@ -53,6 +56,8 @@ class SafetySupervisor {
   void onPose(double stamp, const wheelchair_core::Pose2D& pose);
   /// A laser scan's returns, already in the map frame; non-finite points are ignored.
   void onScan(double stamp, const std::vector<Eigen::Vector2d>& returns_in_map);
+  /// The rear laser's returns in the map frame (rear_guard.h: they guard reverse motion).
+  void onRearScan(double stamp, const std::vector<Eigen::Vector2d>& returns_in_map);
   /// The base driver's status at `stamp`; a fault counts once it has lasted driver_fault_grace.
   void onDriverStatus(double stamp, bool fault, const std::string& detail);
   void onUserStop(double stamp);
@@ -73,6 +78,7 @@ class SafetySupervisor {
   bool inCorridorAhead(const Eigen::Vector2d& point) const;
 
   SafetyLimits limits_;
+  RearGuard rear_;
   wheelchair_core::OccupancyMap map_;
   std::vector<Eigen::Vector2d> path_;
   double scan_stamp_ = -1.0, pose_stamp_ = -1.0, localization_stamp_ = -1.0;
