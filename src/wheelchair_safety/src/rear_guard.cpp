@@ -48,7 +48,8 @@ bool RearGuard::inReverseCorridor(const Eigen::Vector2d& point,
   const double reach = limits_.rear_overhang + limits_.rear_stop_distance;
   Eigen::Vector2d from = pose.position();
   double walked = 0.0;
-  for (size_t i = nearestVertex(from); i < reverse_step_.size() && walked <= reach; ++i) {
+  size_t i = nearestVertex(from);
+  for (; i < reverse_step_.size() && walked <= reach; ++i) {
     const Eigen::Vector2d& to = path_[i + 1];
     double along = 0.0;
     const double dist = wheelchair_core::pointSegmentDistance(point, from, to, &along);
@@ -56,6 +57,16 @@ bool RearGuard::inReverseCorridor(const Eigen::Vector2d& point,
       return true;
     walked += (to - from).norm();
     from = to;
+  }
+  // The path ends backing up: the rear reaches rear_overhang beyond its last axle position, so
+  // the corridor goes on straight behind it.
+  if (i == reverse_step_.size() && walked < reach && reverse_step_.back()) {
+    const Eigen::Vector2d step = path_.back() - path_[path_.size() - 2];
+    if (step.norm() > 1e-9) {
+      const Eigen::Vector2d beyond = path_.back() + step.normalized() * (reach - walked);
+      return wheelchair_core::pointSegmentDistance(point, path_.back(), beyond) <=
+             limits_.corridor_half_width;
+    }
   }
   return false;
 }

@@ -83,10 +83,15 @@ class SafetyNodelet : public nodelet::Nodelet {
     supervisor_->onMap(wheelchair_ros::fromOccupancyGrid(*msg));
   }
 
+  /// A new plan is checked at once (not at the next tick): a plan that backs up with the rear
+  /// laser silent is stopped before the controller has moved the chair.
   void onPlan(const nav_msgs::Path::ConstPtr& msg) {
     const auto path = wheelchair_ros::fromPathMsg(*msg);
-    std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onPath(path);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      supervisor_->onPath(path);
+    }
+    update();
   }
 
   void onEstimate(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {

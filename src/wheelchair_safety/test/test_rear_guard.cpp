@@ -109,6 +109,17 @@ TEST(RearGuard, APersonSteppingBehindTheBackingChairStopsIt) {
   EXPECT_FALSE(s.check(10.25).stop);
 }
 
+// A short back-up (0.5 m): at its end the body's rear reaches 0.80 m beyond the axle's last
+// position, so a person there is in the way although the path itself stops short of them.
+TEST(RearGuard, APersonBehindTheEndOfAShortBackUpStopsIt) {
+  std::vector<Pose2D> path;
+  for (double x = 6.0; x >= 5.5 - 1e-9; x -= 0.05) path.push_back({x, 2.0, 0.0});
+  SafetySupervisor s = fed(path, {6.0, 2.0, 0.0}, true);
+  s.onRearScan(10.05, personAt(4.6, 2.0));  // 0.6 m behind the rear, 0.9 m beyond the path end
+  const SafetyVerdict v = s.check(10.1);
+  EXPECT_EQ(v.reason, StopReason::kObstacleBehind) << v.detail;
+}
+
 TEST(RearGuard, ThingsBesideFarBehindInTheMapOrBehindAForwardChairDoNotStop) {
   SafetySupervisor s = fed(reversePath(), {6.0, 2.0, 0.0}, true);
   s.onRearScan(10.05, personAt(4.9, 2.8));  // beside the corridor (0.8 m off the path)
