@@ -21,13 +21,7 @@ namespace {
 
 wd::ChairParams chair() { return wd::test::shippedChair(); }
 
-wc::PlantConfig mismatchedPlant() {
-  wc::PlantConfig plant;
-  plant.chair = chair();
-  plant.chair.total_mass += 15.0;
-  plant.chair.body_inertia *= 1.15;
-  return plant;
-}
+wc::PlantConfig mismatchedPlant() { return wc::heavierRiderPlant(chair()); }
 
 /// How far the body at `pose` is from the body at the nearest sweep pose: the largest distance
 /// between corresponding footprint vertices [m].
@@ -90,17 +84,7 @@ std::vector<Case> cases() {
                      .straight(2.0)
                      .poses(),
                  {1.0, 2.0, M_PI / 2}});
-  out.push_back({"three_point_turn",
-                 wc::PathBuilder({0.0, 0.0, 0.0})
-                     .straight(0.3)
-                     .arc(0.8, M_PI / 2)
-                     .reverse()
-                     .arc(0.8, M_PI / 2)
-                     .forward()
-                     .arc(1.0, M_PI / 2)
-                     .straight(0.5)
-                     .poses(),
-                 {0.0, 0.0, 0.0}});
+  out.push_back({"three_point_turn", wc::threePointTurnPath(), {0.0, 0.0, 0.0}});
   out.push_back({"back_up_after_turning",
                  wc::PathBuilder({0.0, 0.0, 0.0}).reverse().straight(1.5).poses(),
                  {0.0, 0.0, 1.5}});

@@ -23,13 +23,7 @@ namespace {
 
 wd::ChairParams chair() { return wd::test::shippedChair(); }
 
-wc::PlantConfig mismatchedPlant() {
-  wc::PlantConfig plant;
-  plant.chair = chair();
-  plant.chair.total_mass += 15.0;
-  plant.chair.body_inertia *= 1.15;
-  return plant;
-}
+wc::PlantConfig mismatchedPlant() { return wc::heavierRiderPlant(chair()); }
 
 bool entered(const wc::ClosedLoopResult& r, wc::TrackerState state) {
   return std::any_of(r.trace.begin(), r.trace.end(),
@@ -145,15 +139,7 @@ TEST(ReverseTracking, BacksUpAQuarterTurnWithTheBodyOnThePath) {
 
 TEST(ReverseTracking, StopsAtTheCuspAndKeepsTheComfortLimitsAcrossIt) {
   // Three-point turn: forward left, back right (the tail swings), forward left again.
-  const std::vector<Pose2D> path = wc::PathBuilder({0.0, 0.0, 0.0})
-                                       .straight(0.3)
-                                       .arc(0.8, M_PI / 2)
-                                       .reverse()
-                                       .arc(0.8, M_PI / 2)
-                                       .forward()
-                                       .arc(1.0, M_PI / 2)
-                                       .straight(0.5)
-                                       .poses();
+  const std::vector<Pose2D> path = wc::threePointTurnPath();
   ASSERT_EQ(wheelchair_core::cuspCount(path), 2u);
   const wc::ClosedLoopResult r =
       wc::simulateClosedLoop(path, path.front(), chair(), wc::TrackerConfig{}, mismatchedPlant());

@@ -148,4 +148,12 @@ ClosedLoopResult simulateClosedLoop(const std::vector<Pose2D>& path, const Pose2
   return res;
 }
 
+PlantConfig heavierRiderPlant(const ChairParams& chair) {
+  PlantConfig plant;
+  plant.chair = chair;
+  plant.chair.total_mass += 15.0;
+  plant.chair.body_inertia *= 1.15;
+  return plant;
+}
+
 }  // namespace wheelchair_controller

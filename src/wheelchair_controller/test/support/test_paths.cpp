@@ -126,4 +126,16 @@ std::vector<Pose2D> cosinePath(double amplitude, double wavelength, double lengt
   return p;
 }
 
+std::vector<Pose2D> threePointTurnPath() {
+  return PathBuilder({0.0, 0.0, 0.0})
+      .straight(0.3)
+      .arc(0.8, M_PI / 2)
+      .reverse()
+      .arc(0.8, M_PI / 2)
+      .forward()
+      .arc(1.0, M_PI / 2)
+      .straight(0.5)
+      .poses();
+}
+
 }  // namespace wheelchair_controller

@@ -52,6 +52,11 @@ std::vector<NamedPath> homeTestPaths();
 /// the axle: no path enters them.
 std::vector<NamedPath> flatTestPaths();
 
+/// A three-point turn from the origin heading +x: 0.3 m straight, forward left (radius 0.8 m,
+/// quarter turn), back right (the tail swings), forward left (radius 1.0 m) and 0.5 m straight.
+/// Two cusps.
+std::vector<Pose2D> threePointTurnPath();
+
 /// Figure 6: y = amplitude cos(2 pi x / wavelength), x in [0, length]; the chair starts at the
 /// origin heading +x, i.e. `amplitude` to the side of the path's start.
 std::vector<Pose2D> cosinePath(double amplitude = 0.3, double wavelength = 4.0, double length = 8.0,
