@@ -1,5 +1,7 @@
 #include "reeds_shepp.h"
 
+#include <wheelchair_core/kinematics.h>
+
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
@@ -14,10 +16,7 @@ namespace {
 
 /// The pose after `d` metres on an arc of curvature `kappa` (d < 0: in reverse).
 Pose2D along(const Pose2D& p, double kappa, double d) {
-  if (std::abs(kappa) < 1e-12) return {p.x + d * std::cos(p.yaw), p.y + d * std::sin(p.yaw), p.yaw};
-  const double yaw = p.yaw + kappa * d;
-  return {p.x + (std::sin(yaw) - std::sin(p.yaw)) / kappa,
-          p.y + (std::cos(p.yaw) - std::cos(yaw)) / kappa, yaw};
+  return wheelchair_core::integrateArc(p, {d, kappa * d});
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "search_attempt.h"
 
+#include <wheelchair_core/kinematics.h>
+
 #include "geodesic_distance.h"
 #include "reeds_shepp.h"
 
@@ -33,10 +35,7 @@ bool joinsGoalAlongTheMotion(const Pose2D& arrival, bool reverse, const Pose2D& 
 /// The pose after `d` metres along an arc of curvature `kappa` (straight for kappa = 0); d < 0
 /// drives it in reverse (the heading changes by kappa d).
 Pose2D arcEnd(const Pose2D& p, double kappa, double d) {
-  if (std::abs(kappa) < 1e-9) return {p.x + d * std::cos(p.yaw), p.y + d * std::sin(p.yaw), p.yaw};
-  const double yaw = p.yaw + kappa * d;
-  return {p.x + (std::sin(yaw) - std::sin(p.yaw)) / kappa,
-          p.y + (std::cos(p.yaw) - std::cos(yaw)) / kappa, yaw};
+  return wheelchair_core::integrateArc(p, {d, kappa * d});
 }
 
 }  // namespace
@@ -168,7 +167,10 @@ bool SearchAttempt::acceptCandidate(int idx) {
     last_candidate_reason_ = os.str();
     return false;
   }
-  std::vector<Pose2D> path = pathTo(idx);
+  return acceptPath(pathTo(idx));
+}
+
+bool SearchAttempt::acceptPath(std::vector<Pose2D> path) {
   const SweepCheck check = checkSweep(checker_, sweep_.sweep(start_, path), rule_);
   if (!check.ok) {
     last_candidate_reason_ = check.reason;
@@ -195,13 +197,7 @@ bool SearchAttempt::tryAnalytic(int idx, const Node& node) {
   std::vector<Pose2D> path = pathTo(idx, false);
   if (path.size() == 1) path.front().yaw = node.pose.yaw;
   path.insert(path.end(), shot.poses.begin() + 1, shot.poses.end());
-  const SweepCheck check = checkSweep(checker_, sweep_.sweep(start_, path), rule_);
-  if (!check.ok) {
-    last_candidate_reason_ = check.reason;
-    return false;
-  }
-  result_.path = std::move(path);
-  result_.sweep = check;
+  if (!acceptPath(std::move(path))) return false;
   result_.cusps = node.cusps + shot.cusps + (cusp ? 1 : 0);
   result_.reversed_length = node.reversed + shot.reversed;
   return true;

@@ -72,6 +72,9 @@ class SearchAttempt {
   /// `result_` filled) if it keeps the clearance, the limits on cusps and reversing, and the
   /// whole executed sweep passes.
   bool tryAnalytic(int idx, const Node& node);
+  /// True (and `result_` filled) if the executed sweep of `path` keeps the clearance; else its
+  /// reason is kept for the failure message.
+  bool acceptPath(std::vector<Pose2D> path);
 
   /// Clearance of a pose if it keeps what the rule requires there, else the blocking contact.
   bool poseOk(const Pose2D& p, bool start_rotation, FootprintContact& c) const;
