@@ -571,12 +571,17 @@ void Navigator::finish(Reason reason, const std::string& detail, double now,
   setState(State::kIdle);
 }
 
-void Navigator::emit(DriveResult result) { out_.results.push_back(std::move(result)); }
+void Navigator::emit(DriveResult result) {
+  if (result.reason != Reason::kReplaced) idle_sentence_ = result.sentence;
+  out_.results.push_back(std::move(result));
+}
 
 // ---- what it says ------------------------------------------------------------------------------
 
 void Navigator::setState(State state, RouteKind kind) {
-  const std::string sentence = stateSentence(state, context(), kind);
+  // Idle, a screen still shows how the last drive ended.
+  const std::string sentence =
+      state == State::kIdle ? idle_sentence_ : stateSentence(state, context(), kind);
   if (state != feedback_.state || sentence != feedback_.sentence) out_.feedback_changed = true;
   feedback_.state = state;
   feedback_.sentence = sentence;

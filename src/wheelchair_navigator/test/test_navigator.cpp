@@ -195,6 +195,9 @@ TEST_F(NavigatorTest, AcceptedGoalReleasesTheLatchPlansDrivesAndArrivesWithOneRe
   EXPECT_FALSE(reached.path) << "an arrival is no stop";
   EXPECT_NEAR(reached.results[0].distance_travelled, 2.0, 0.03);
   EXPECT_FALSE(nav.active());
+  EXPECT_EQ(nav.state(), State::kIdle);
+  EXPECT_EQ(nav.feedback().sentence, "Arrived.") << "a screen shows how the drive ended";
+  EXPECT_TRUE(reached.feedback_changed);
   // Nothing that comes later is a second result.
   std::vector<Output> later;
   later.push_back(nav.onPathStatus(driving.path->id, ControllerPhase::kAborted, "x", t + 11));

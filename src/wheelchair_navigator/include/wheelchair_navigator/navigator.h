@@ -106,7 +106,7 @@ struct Feedback {
   Pose2D pose;
   bool have_pose = false;
   double distance_remaining = NAN;  ///< [m] along the route
-  std::string sentence;
+  std::string sentence;             ///< what the rider is told now; idle: how the last drive ended
   int replans = 0;
   int waits = 0;
   double last_planning_time = NAN;  ///< [s]
@@ -208,6 +208,7 @@ class Navigator {
   bool chair_may_move_ = false;  ///< a route was handed over and not yet reported ended
 
   std::unique_ptr<Drive> drive_;
+  std::string idle_sentence_;  ///< the last result's sentence, shown while idle
   Output out_;
   Feedback feedback_;
 };
