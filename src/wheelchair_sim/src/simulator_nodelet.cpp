@@ -145,45 +145,39 @@ class SimulatorNodelet : public nodelet::Nodelet {
   }
 
   bool onAddObstacle(AddObstacle::Request& req, AddObstacle::Response& res) {
-    std::lock_guard<std::mutex> lock(mutex_);
     Disc disc;
     disc.centre = {req.x, req.y};
     disc.radius = req.radius;
     disc.appear_time = req.appear_time;
-    try {
-      chair_sim_->simulator().obstacles().add(disc);
-    } catch (const std::invalid_argument& e) {
-      res.success = false;
-      res.message = e.what();
-      return true;
-    }
-    res.success = true;
-    res.message = "obstacle added";
-    NODELET_INFO("obstacle r=%.2f m at (%.2f, %.2f) from t=%.2f s", req.radius, req.x, req.y,
-                 req.appear_time);
+    res.success = addDisc(disc, res.message);
     return true;
   }
 
   /// A person walking (or standing, then leaving): velocity and a vanish time.
   bool onAddMovingObstacle(AddMovingObstacle::Request& req, AddMovingObstacle::Response& res) {
-    std::lock_guard<std::mutex> lock(mutex_);
     Disc disc;
     disc.centre = {req.x, req.y};
     disc.radius = req.radius;
     disc.appear_time = req.appear_time;
     disc.velocity = {req.vx, req.vy};
     disc.vanish_time = req.vanish_time == 0.0 ? INFINITY : req.vanish_time;
+    res.success = addDisc(disc, res.message);
+    return true;
+  }
+
+  /// Adds `disc` to the world; false with the reason in `message` when it is refused.
+  bool addDisc(const Disc& disc, std::string& message) {
+    std::lock_guard<std::mutex> lock(mutex_);
     try {
       chair_sim_->simulator().obstacles().add(disc);
     } catch (const std::invalid_argument& e) {
-      res.success = false;
-      res.message = e.what();
-      return true;
+      message = e.what();
+      return false;
     }
-    res.success = true;
-    res.message = "obstacle added";
+    message = "obstacle added";
     NODELET_INFO("obstacle r=%.2f m at (%.2f, %.2f) moving (%.2f, %.2f) m/s from t=%.2f to %.2f s",
-                 req.radius, req.x, req.y, req.vx, req.vy, req.appear_time, disc.vanish_time);
+                 disc.radius, disc.centre.x(), disc.centre.y(), disc.velocity.x(),
+                 disc.velocity.y(), disc.appear_time, disc.vanish_time);
     return true;
   }
 
