@@ -6,7 +6,11 @@
 // someone else started (rviz, a script: the navigator's ~state shows it active) puts the HMI to
 // driving too, so that a press stops it. While the rider chooses, a change of the localizer's
 // verdict (wheelchair_msgs/LocalizationStatus) is told in the localizer's own words.
+#include "hmi_state_publisher.h"
+
 #include <wheelchair_hmi/places.h>
+#include <wheelchair_hmi/places_watch.h>
+#include <wheelchair_hmi/scan_state.h>
 #include <wheelchair_hmi/switch_scanner.h>
 #include <wheelchair_msgs/GoToPlace.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
@@ -79,6 +83,8 @@ class HmiNodelet : public nodelet::Nodelet {
     map_frame_ = config.map_frame;
     try {
       scanner_ = std::make_unique<SwitchScanner>(loadPlaces(config.places_file), config.scanner);
+      places_watch_ = std::make_unique<PlacesFileWatch>(config.places_file);
+      scanner_options_ = config.scanner;
     } catch (const std::exception& e) {  // no destinations to offer: refuse to start
       NODELET_FATAL("%s", e.what());
       throw wheelchair_core::ConfigError(getPrivateNodeHandle().getNamespace() + ": " + e.what());
@@ -86,6 +92,7 @@ class HmiNodelet : public nodelet::Nodelet {
     client_ = std::make_unique<NavigateClient>(nh, config.navigator_action, false);
     stop_pub_ = nh.advertise<std_msgs::Empty>("user_stop", 1);
     announce_pub_ = nh.advertise<std_msgs::String>("hmi/announce", 10, true);
+    state_pub_ = std::make_unique<HmiStatePublisher>(nh);
     marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("hmi/markers", 1, true);
     switch_sub_ = nh.subscribe("switch", 10, &HmiNodelet::onSwitch, this);
     go_to_sub_ = nh.subscribe("hmi/go_to", 1, &HmiNodelet::onGoTo, this);
@@ -117,8 +124,37 @@ class HmiNodelet : public nodelet::Nodelet {
           endDrive("The chair did not answer: try again in a moment.");
         }
       }
+      if (++ticks_ % 10 == 0) reloadPlaces();
+      publishState();
     }
     perform(command);
+  }
+
+  /// A changed places file (the carer saved a place on the display) is offered from the next
+  /// room scan on; a choice or a drive under way is not disturbed.
+  void reloadPlaces() {
+    std::string problem;
+    if (auto places = places_watch_->changed(problem)) pending_places_ = std::move(places);
+    if (!problem.empty())
+      NODELET_ERROR("[switch] the places file changed but is not used (the old places stay): %s",
+                    problem.c_str());
+    if (!pending_places_ || scanner_->phase() != SwitchScanner::Phase::kGroups) return;
+    try {
+      auto scanner = std::make_unique<SwitchScanner>(std::move(*pending_places_), scanner_options_);
+      scanner_ = std::move(scanner);
+      NODELET_INFO("[switch] places file read again: %zu places", scanner_->places().size());
+      handle(scanner_->start(ros::Time::now().toSec()));  // a room scan: no goal, no stop
+    } catch (const std::exception& e) {
+      NODELET_ERROR("[switch] the new places are not used (the old places stay): %s", e.what());
+    }
+    pending_places_.reset();
+  }
+
+  /// /hmi/state when what it shows changed (called after every event and every tick).
+  void publishState() {
+    ScanState state = scanState(*scanner_, ros::Time::now().toSec(), goal_place_);
+    state.sentence = last_sentence_;
+    state_pub_->publish(state);
   }
 
   void onSwitch(const std_msgs::Empty::ConstPtr&) {
@@ -158,7 +194,9 @@ class HmiNodelet : public nodelet::Nodelet {
       announce(response.message);
       if (place) {
         scanner_->driving(ros::Time::now().toSec());
+        goal_place_ = place->name;
         command.goal = goalFor(*place);
+        publishState();
       }
     }
     perform(command);
@@ -241,10 +279,18 @@ class HmiNodelet : public nodelet::Nodelet {
     navigator_active_ = msg->active;
     if (own_goal_ != 0) return;  // the rider's drive: told from its feedback and result
     if (msg->active) {
+      const std::string place =
+          !msg->place.empty()
+              ? msg->place
+              : placeAt(scanner_->places(), wheelchair_ros::toPose2D(msg->goal.pose));
+      const bool new_place = place != goal_place_;
+      goal_place_ = place;
       if (scanner_->phase() != SwitchScanner::Phase::kDriving) {
         scanner_->driving(ros::Time::now().toSec());
         told_.clear();
         announce("The chair is moving. Press to stop.");
+      } else if (new_place) {
+        publishState();
       }
       tell(*msg);
     } else if (was_active) {
@@ -287,7 +333,10 @@ class HmiNodelet : public nodelet::Nodelet {
     ClientCommand command;
     if (out.kind == ScanOutput::Kind::kNone) return command;
     announce(out.text);
-    if (out.kind == ScanOutput::Kind::kGo) command.goal = goalFor(*out.place);
+    if (out.kind == ScanOutput::Kind::kGo) {
+      goal_place_ = out.place->name;
+      command.goal = goalFor(*out.place);
+    }
     if (out.kind == ScanOutput::Kind::kStop) {
       waiting_goal_.reset();
       // The supervisor and the controller stop at once; the navigator ends the drive (the
@@ -297,6 +346,7 @@ class HmiNodelet : public nodelet::Nodelet {
       own_goal_ = 0;
     }
     publishMarkers(out);
+    publishState();
     return command;
   }
 
@@ -305,6 +355,8 @@ class HmiNodelet : public nodelet::Nodelet {
     std_msgs::String msg;
     msg.data = text;
     announce_pub_.publish(msg);
+    last_sentence_ = text;
+    publishState();
   }
 
   /// Every place as a sphere with its name; the highlighted room or place stands out.
@@ -351,6 +403,13 @@ class HmiNodelet : public nodelet::Nodelet {
   bool navigator_active_ = false;  ///< the navigator's last state: a drive in progress
   std::string told_;               ///< the navigator's sentence last told
   std::optional<bool> localized_;  ///< the localizer's last verdict
+  std::unique_ptr<HmiStatePublisher> state_pub_;
+  std::unique_ptr<PlacesFileWatch> places_watch_;
+  std::optional<std::vector<Place>> pending_places_;  ///< read, waiting for the room scan
+  ScannerOptions scanner_options_;
+  unsigned ticks_ = 0;
+  std::string goal_place_;     ///< the place the chair drives to ("" for a spot)
+  std::string last_sentence_;  ///< the last announcement
   ros::ServiceServer go_to_srv_;
   ros::Timer timer_;
 };
