@@ -60,6 +60,10 @@ add_deploy_files() {
   install -D -m 644 "$ROOT/deploy/wheelchair.default" "$stage/etc/default/wheelchair"
   install -D -m 755 "$ROOT/deploy/wheelchair-up" "$stage$PREFIX/lib/wheelchair/wheelchair-up"
   install -D -m 755 "$ROOT/deploy/can-up" "$stage$PREFIX/lib/wheelchair/can-up"
+  install -D -m 755 "$ROOT/deploy/netns-up" "$stage$PREFIX/lib/wheelchair/netns-up"
+  install -D -m 755 "$ROOT/deploy/check-isolation" "$stage$PREFIX/lib/wheelchair/check-isolation"
+  install -D -m 644 "$ROOT/deploy/wheelchair-netns.service" \
+    "$stage/lib/systemd/system/wheelchair-netns.service"
   install -D -m 644 "$ROOT/deploy/wheelchair-display.service" \
     "$stage/lib/systemd/system/wheelchair-display.service"
   install -D -m 755 "$ROOT/deploy/display-up" "$stage$PREFIX/lib/wheelchair/display-up"

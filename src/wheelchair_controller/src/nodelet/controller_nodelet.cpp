@@ -75,6 +75,7 @@ void ControllerNodelet::onInit() {
   worker_ = std::thread(&ControllerNodelet::buildReferences, this);
   path_sub_ = nh.subscribe("plan", 1, &ControllerNodelet::onPath, this);
   safety_sub_ = nh.subscribe("safety/stop", 1, &ControllerNodelet::onSafetyStop, this);
+  speed_limit_sub_ = nh.subscribe("safety/speed_limit", 1, &ControllerNodelet::onSpeedLimit, this);
   user_stop_sub_ = nh.subscribe("user_stop", 5, &ControllerNodelet::onUserStop, this);
   localization_sub_ =
       nh.subscribe("localization/status", 5, &ControllerNodelet::onLocalizationStatus, this);
@@ -135,6 +136,11 @@ void ControllerNodelet::onSafetyStop(const std_msgs::Bool::ConstPtr& msg) {
   } else {
     tracker_->release("safety");
   }
+}
+
+void ControllerNodelet::onSpeedLimit(const std_msgs::Float64::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  tracker_->setSpeedLimit(msg->data);
 }
 
 void ControllerNodelet::onUserStop(const std_msgs::Empty::ConstPtr&) {
