@@ -30,6 +30,8 @@ NODES = [
                                      "_initial_y:=2.2"], ["/simulator"]),
     ("wheelchair_safety", "safety", [], ["/safety"]),
     ("wheelchair_hmi", "hmi", [f"_places_file:={WORLDS}/flat.places.yaml"], ["/hmi"]),
+    ("wheelchair_navigator", "navigator", [f"_places_file:={WORLDS}/flat.places.yaml"],
+     ["/navigator"]),
     ("wheelchair_slam", "slam_node", [], ["/slam_node"]),
     ("wheelchair_bringup", "wheelchair", [f"{CONFIG}/bringup_minimal.yaml"], ["/wheelchair"]),
 ]
@@ -57,6 +59,9 @@ REFUSED = [
      "'frame_id' is now called 'map_frame'"),
     ("wheelchair_hmi", "hmi", ["_places_file:=/nonexistent/places.yaml"],
      "cannot open places file"),
+    ("wheelchair_navigator", "navigator", ["_global_frame:=map"],
+     "'global_frame' is now called 'map_frame'"),
+    ("wheelchair_navigator", "navigator", ["_wait_for_clear:=-1.0"], "wait_for_clear"),
     ("wheelchair_bringup", "wheelchair", [_missing_home_config()],
      "/hmi/places_file: cannot read '/nonexistent/home/places.yaml'"),
     ("wheelchair_bringup", "wheelchair", [f"{CONFIG}/bringup_minimal.yaml", "_hmii/scan_interval:=1.0"],

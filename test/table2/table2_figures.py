@@ -237,12 +237,13 @@ def write_markdown(records, bench_rows, bench_problem, target, speed, nice=None,
              "Setup: world `flat` (test/worlds), pairs `test/table2/flat_pairs.yaml`; simulator "
              f"(wheelchair_sim, eq. 15 with rolling resistance, laser noise 1 cm, odometry "
              f"errors) at {speed:g}× real time behind the CAN path (base driver over UDP); the "
-             "one-process chair: map server, KLD localizer, harmonic planner, controller, base "
-             "driver, safety supervisor, HMI"
+             "one-process chair: map server, KLD localizer, harmonic planner, navigator, "
+             "controller, base driver, safety supervisor, HMI"
              + (f"; simulator and chair at nice {nice} (as deployed: `Nice=-5` in "
                 "deploy/wheelchair.service)" if nice is not None else "")
              + ". Protocol per pair: teleport the chair to the start, `/initialpose` there, "
-             "goal on `/move_base_simple/goal`, wait for the controller's `goal_reached`"
+             "the goal through the navigator's `move_base` action, wait for the controller's "
+             "`goal_reached` and the action's result"
              + (f". All runs in one go, rviz snapshots included: {wall_time_s / 60:.1f} min wall"
                 if wall_time_s else "") + ".", "",
              "Definitions: reference = the planned path `/plan` (axle-centre poses) as a "

@@ -11,9 +11,12 @@ import os
 import threading
 import time
 
+import actionlib
 import rospy
 import yaml
+from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import PoseStamped, PoseWithCovarianceStamped
+from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from nav_msgs.msg import Odometry, Path
 from std_msgs.msg import Bool, String
 from wheelchair_sim.srv import SetPose
@@ -82,6 +85,10 @@ class Table2Runner:
         rospy.Subscriber("/sim/collision", Bool, self._on_collision, queue_size=5)
         self.init_pub = rospy.Publisher("/initialpose", PoseWithCovarianceStamped, queue_size=1,
                                         latch=True)
+        # The navigator owns every drive: goals through its move_base action (as rviz and
+        # move_base scripts give them); a bring-up without it (chair_table2.yaml): the planner
+        # host's /move_base_simple/goal.
+        self.move_base = actionlib.SimpleActionClient("/move_base", MoveBaseAction)
         self.plan_pub = rospy.Publisher("/plan", Path, queue_size=1)
         self.goal_pub = rospy.Publisher("/move_base_simple/goal", PoseStamped, queue_size=1)
         self.last_truth = None
@@ -143,6 +150,7 @@ class Table2Runner:
         rospy.wait_for_service("/sim/teleport", timeout=wall_timeout * self.wall_scale)
         self.wait_for("the controller's status", lambda: bool(self.status), wall_timeout)
         self.teleport = rospy.ServiceProxy("/sim/teleport", SetPose)
+        self.navigator = self.move_base.wait_for_server(rospy.Duration(10.0 * self.wall_scale))
 
     def _stamped_pose(self, pose):
         msg = PoseWithCovarianceStamped()
@@ -182,7 +190,10 @@ class Table2Runner:
         goal = self._stamped_pose(pair["goal"])
         goal_msg = PoseStamped(header=goal.header, pose=goal.pose.pose)
         t_goal = rospy.Time.now().to_sec()
-        self.goal_pub.publish(goal_msg)
+        if self.navigator:
+            self.move_base.send_goal(MoveBaseGoal(target_pose=goal_msg))
+        else:
+            self.goal_pub.publish(goal_msg)
         try:
             self.wait_for("a plan", lambda: self.plan_count > plans_before, 60.0)
             with self.lock:
@@ -195,8 +206,8 @@ class Table2Runner:
             t_end = rospy.Time.now().to_sec() + limit
 
             def finished():
-                return (bool(terminal_statuses(self.status)) or self.collided
-                        or rospy.Time.now().to_sec() > t_end)
+                return (bool(terminal_statuses(self.status)) and self.navigator_done()
+                        or self.collided or rospy.Time.now().to_sec() > t_end)
 
             # wall: the simulated limit at a fifth of real time, at least
             self.wait_for("goal reached", finished, 5.0 * limit + 60.0)
@@ -207,17 +218,40 @@ class Table2Runner:
         with self.lock:
             status, truth, estimates = list(self.status), list(self.truth), list(self.estimates)
             collided = self.collided
+        navigator = self.navigator_outcome()
         if not terminal_statuses(status) or terminal_statuses(status)[0][1] != "goal_reached":
             self.stop_chair()
         record.update(self.evaluate(pair, plan, status, truth, estimates, t_goal, collided))
+        if navigator:
+            record["navigator"] = navigator
         record.update({"collision": collided, "path_length_m": length,
                        "wall_time_s": time.time() - wall0})
         return record
 
+    def navigator_done(self):
+        """The navigator's result has come (always true without a navigator)."""
+        return not self.navigator or self.move_base.get_state() not in (
+            GoalStatus.PENDING, GoalStatus.ACTIVE, GoalStatus.PREEMPTING, GoalStatus.RECALLING)
+
+    def navigator_outcome(self):
+        """The move_base action's end: {"status": "SUCCEEDED"..., "text": the rider's sentence}
+        (None without a navigator)."""
+        if not self.navigator:
+            return None
+        state = self.move_base.get_state()
+        names = {v: k for k, v in vars(GoalStatus).items() if k.isupper() and isinstance(v, int)}
+        return {"status": names.get(state, str(state)),
+                "text": self.move_base.get_goal_status_text()}
+
     def stop_chair(self):
-        """After a failed run: an empty plan, which the controller answers with a controlled
-        stop (nav_msgs/Path convention of the planner host), so nothing moves at the next
+        """After a failed run: the navigator's drive canceled (a controlled stop), or without a
+        navigator an empty plan, which the controller answers with a controlled stop
+        (nav_msgs/Path convention of the planner host), so nothing moves at the next
         teleport."""
+        if self.navigator:
+            self.move_base.cancel_all_goals()
+            self.sim_sleep(2.0)
+            return
         empty = Path()
         empty.header.frame_id = "map"
         empty.header.stamp = rospy.Time.now()

@@ -73,6 +73,8 @@ class Table2Protocol(unittest.TestCase):
         for r in self.records:
             name = "run %d (%s)" % (r["index"], r["name"])
             self.assertEqual(r["outcome"], "goal_reached", name)
+            if "navigator" in r:  # the drive's owner says so too, once, in the rider's words
+                self.assertEqual(r["navigator"], {"status": "SUCCEEDED", "text": "Arrived."}, name)
             self.assertFalse(r["collision"], name + ": collision")
             self.assertLess(r["goal_position_error_m"], GOAL_POSITION_TOLERANCE, name)
             self.assertLess(r["goal_heading_error_deg"], GOAL_HEADING_TOLERANCE, name)

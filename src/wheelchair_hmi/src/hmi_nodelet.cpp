@@ -1,11 +1,11 @@
-// ROS layer of the one-switch interface: /switch events and named places in, goals, stop
-// requests, announcements and rviz markers out. It also tells the rider what became of a
-// goal: refused by the planner (with its reason), reached or aborted by the controller, or
-// stopped by the safety supervisor (wheelchair_msgs/SafetyStatus); each of those ends the drive
-// and restarts scanning. While the rider chooses, a change of the localizer's verdict
-// (wheelchair_msgs/LocalizationStatus) is told in the localizer's own words.
-// The controller's outcome is read from ~path_status, which names the path it concerns: the end
-// of a path older than the rider's latest command (a goal, a stop) is not this drive's end.
+// ROS layer of the one-switch interface: /switch events and named places in, drives, stop
+// requests, announcements and rviz markers out. A chosen place becomes a goal of the
+// navigator's `navigate` action (wheelchair_msgs/NavigateAction); what the navigator says about
+// it (its feedback's sentence: the route, waiting, blocked) and how it ended (its result's
+// sentence) is told to the rider, and the result ends the drive and restarts scanning. A drive
+// someone else started (rviz, a script: the navigator's ~state shows it active) puts the HMI to
+// driving too, so that a press stops it. While the rider chooses, a change of the localizer's
+// verdict (wheelchair_msgs/LocalizationStatus) is told in the localizer's own words.
 #include "hmi_state_publisher.h"
 
 #include <wheelchair_hmi/places.h>
@@ -14,14 +14,12 @@
 #include <wheelchair_hmi/switch_scanner.h>
 #include <wheelchair_msgs/GoToPlace.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
-#include <wheelchair_msgs/PlanCertificate.h>
-#include <wheelchair_msgs/SafetyStatus.h>
+#include <wheelchair_msgs/NavigateAction.h>
+#include <wheelchair_msgs/NavigatorState.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/parameters.h>
 
-#include <actionlib_msgs/GoalStatus.h>
-
-#include <geometry_msgs/PoseStamped.h>
+#include <actionlib/client/simple_action_client.h>
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
 #include <std_msgs/Empty.h>
@@ -29,28 +27,30 @@
 #include <visualization_msgs/MarkerArray.h>
 #include <pluginlib/class_list_macros.hpp>
 
-#include <cmath>
-#include <cstdio>
 #include <memory>
 #include <mutex>
 #include <optional>
 
 namespace wheelchair_hmi {
 
+using NavigateClient = actionlib::SimpleActionClient<wheelchair_msgs::NavigateAction>;
+using wheelchair_msgs::NavigatorState;
+
 /// Every private parameter of the nodelet: the scanner's options and its own.
 struct HmiNodeletConfig {
   ScannerOptions scanner;
   std::string places_file;  ///< required: the named places of the map
   std::string map_frame = "map";
-  std::string controller_path_status = "controller/path_status";
-  std::string safety_status = "safety/status";
+  std::string navigator_action = "navigate";
+  std::string navigator_state = "navigator/state";
   std::string localization_status = "localization/status";
 
   std::string validate() const {
     const std::string scanner_problem = scanner.validate();
     wheelchair_core::ConfigChecks checks;
     checks.check(scanner_problem.empty(), scanner_problem)
-        .check(!map_frame.empty(), "map_frame must not be empty");
+        .check(!map_frame.empty(), "map_frame must not be empty")
+        .check(!navigator_action.empty(), "navigator_action must name the navigator's action");
     return checks.result();
   }
 };
@@ -60,13 +60,22 @@ void readHmiNodeletConfig(wheelchair_core::ConfigReader& reader, HmiNodeletConfi
   reader.require("places_file", config.places_file);
   reader.read("map_frame", config.map_frame);
   reader.renamed("frame_id", "map_frame");
-  reader.read("controller_path_status", config.controller_path_status);
-  reader.read("safety_status", config.safety_status);
+  reader.renamed("controller_path_status", "navigator_action");  // the navigator owns drives
+  reader.renamed("safety_status", "navigator_action");
+  reader.read("navigator_action", config.navigator_action);
+  reader.read("navigator_state", config.navigator_state);
   reader.read("localization_status", config.localization_status);
 }
 
 class HmiNodelet : public nodelet::Nodelet {
  private:
+  /// What to do with the navigator once mutex_ is released (its client takes locks of its own,
+  /// and calls back into this nodelet from other threads).
+  struct ClientCommand {
+    std::optional<wheelchair_msgs::NavigateGoal> goal;
+    bool cancel = false;
+  };
+
   void onInit() override {
     ros::NodeHandle nh = getNodeHandle();
     const auto config = wheelchair_ros::loadParameters<HmiNodeletConfig>(getPrivateNodeHandle(),
@@ -80,7 +89,7 @@ class HmiNodelet : public nodelet::Nodelet {
       NODELET_FATAL("%s", e.what());
       throw wheelchair_core::ConfigError(getPrivateNodeHandle().getNamespace() + ": " + e.what());
     }
-    goal_pub_ = nh.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 1);
+    client_ = std::make_unique<NavigateClient>(nh, config.navigator_action, false);
     stop_pub_ = nh.advertise<std_msgs::Empty>("user_stop", 1);
     announce_pub_ = nh.advertise<std_msgs::String>("hmi/announce", 10, true);
     state_pub_ = std::make_unique<HmiStatePublisher>(nh);
@@ -89,23 +98,36 @@ class HmiNodelet : public nodelet::Nodelet {
     go_to_sub_ = nh.subscribe("hmi/go_to", 1, &HmiNodelet::onGoTo, this);
     finished_sub_ = nh.subscribe("hmi/finished", 1, &HmiNodelet::onFinished, this);
     go_to_srv_ = nh.advertiseService("go_to_place", &HmiNodelet::onGoToService, this);
-    outcome_subs_.push_back(nh.subscribe("move_base_simple/goal", 1, &HmiNodelet::onGoal, this));
-    outcome_subs_.push_back(nh.subscribe("plan_certificate", 1, &HmiNodelet::onPlan, this));
-    outcome_subs_.push_back(
-        nh.subscribe(config.controller_path_status, 5, &HmiNodelet::onController, this));
-    outcome_subs_.push_back(nh.subscribe(config.safety_status, 5, &HmiNodelet::onSafety, this));
-    outcome_subs_.push_back(
-        nh.subscribe(config.localization_status, 5, &HmiNodelet::onLocalization, this));
+    state_sub_ = nh.subscribe(config.navigator_state, 5, &HmiNodelet::onNavigatorState, this);
+    localization_sub_ =
+        nh.subscribe(config.localization_status, 5, &HmiNodelet::onLocalization, this);
     timer_ = nh.createTimer(ros::Duration(0.1), &HmiNodelet::onTimer, this);
-    std::lock_guard<std::mutex> lock(mutex_);
-    handle(scanner_->start(ros::Time::now().toSec()));
+    ClientCommand command;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      command = handle(scanner_->start(ros::Time::now().toSec()));
+    }
+    perform(command);
   }
 
   void onTimer(const ros::TimerEvent&) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    handle(scanner_->tick(ros::Time::now().toSec()));
-    if (++ticks_ % 10 == 0) reloadPlaces();
-    publishState();
+    ClientCommand command;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      command = handle(scanner_->tick(ros::Time::now().toSec()));
+      if (waiting_goal_ && !command.goal && !command.cancel) {
+        if (client_->isServerConnected()) {
+          command.goal = waiting_goal_;
+        } else if ((ros::WallTime::now() - waiting_since_).toSec() > kConnectTimeout) {
+          NODELET_WARN("[switch] the navigator's action server is not connected");
+          waiting_goal_.reset();
+          endDrive("The chair did not answer: try again in a moment.");
+        }
+      }
+      if (++ticks_ % 10 == 0) reloadPlaces();
+      publishState();
+    }
+    perform(command);
   }
 
   /// A changed places file (the carer saved a place on the display) is offered from the next
@@ -121,7 +143,7 @@ class HmiNodelet : public nodelet::Nodelet {
       auto scanner = std::make_unique<SwitchScanner>(std::move(*pending_places_), scanner_options_);
       scanner_ = std::move(scanner);
       NODELET_INFO("[switch] places file read again: %zu places", scanner_->places().size());
-      handle(scanner_->start(ros::Time::now().toSec()));
+      handle(scanner_->start(ros::Time::now().toSec()));  // a room scan: no goal, no stop
     } catch (const std::exception& e) {
       NODELET_ERROR("[switch] the new places are not used (the old places stay): %s", e.what());
     }
@@ -136,110 +158,21 @@ class HmiNodelet : public nodelet::Nodelet {
   }
 
   void onSwitch(const std_msgs::Empty::ConstPtr&) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    const ScanOutput out = scanner_->press(ros::Time::now().toSec());
-    // The rider's stop is the latest command: what the controller still says about the path
-    // it stops (e.g. "tracking" sent just before the stop) does not restart the drive.
-    if (out.kind == ScanOutput::Kind::kStop) command_stamp_ = ros::Time::now();
-    handle(out);
+    ClientCommand command;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      command = handle(scanner_->press(ros::Time::now().toSec()));
+    }
+    perform(command);
   }
 
   void onFinished(const std_msgs::Empty::ConstPtr&) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    handle(scanner_->finished(ros::Time::now().toSec()));
-  }
-
-  /// Any goal (ours, rviz's): the chair is about to drive; a press stops it. The planner's
-  /// answer may be processed before or after this (different nodelets, different threads).
-  void onGoal(const geometry_msgs::PoseStamped::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    scanner_->driving(ros::Time::now().toSec());
-    goal_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
-    command_stamp_ = goal_stamp_;
-    goal_pending_ = true;
-    goal_place_ = placeAt(scanner_->places(), wheelchair_ros::toPose2D(msg->pose));
-    if (certificate_ && certificate_->header.stamp >= goal_stamp_) answerGoal();
-    publishState();
-  }
-
-  void onPlan(const wheelchair_msgs::PlanCertificate::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    certificate_ = msg;
-    if (goal_pending_ && msg->header.stamp >= goal_stamp_) answerGoal();
-  }
-
-  /// The planner's answer to the goal: a refusal is told to the rider, the chair stays.
-  void answerGoal() {
-    goal_pending_ = false;
-    if (certificate_->success) {
-      announce("Route found: " + formatLength(certificate_->length) + ".");
-      return;
+    ClientCommand command;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      command = handle(scanner_->finished(ros::Time::now().toSec()));
     }
-    // A goal refused during a drive: the chair may still follow the previous path (the host
-    // publishes no path for a goal it rejects outright); it stays where it is, as told.
-    if (controller_moving_) stop_pub_.publish(std_msgs::Empty());
-    endDrive("Cannot go there: " + certificate_->failure_reason + ". The chair stays where it is.");
-  }
-
-  /// The controller's state and the path it concerns (stamped by the planner after the goal
-  /// came). Ignored when that path is older than the rider's latest command: the previous
-  /// drive's "goal_reached" can come after a new goal, before the new path reached the
-  /// controller. Otherwise "goal_reached" or "aborted: why" ends the drive, and a moving chair
-  /// (a new path, e.g. a replan, while scanning) puts the HMI back to driving: a press stops it.
-  void onController(const actionlib_msgs::GoalStatus::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    controller_moving_ = msg->status == actionlib_msgs::GoalStatus::ACTIVE ||
-                         msg->status == actionlib_msgs::GoalStatus::PREEMPTING;
-    if (msg->goal_id.stamp + ros::Duration(kStampTolerance) < command_stamp_) return;
-    if (msg->status == actionlib_msgs::GoalStatus::SUCCEEDED) endDrive("Arrived.");
-    if (msg->status == actionlib_msgs::GoalStatus::ABORTED) endDrive("Stopped: " + msg->text + ".");
-    if (msg->status == actionlib_msgs::GoalStatus::ACTIVE &&
-        scanner_->phase() != SwitchScanner::Phase::kDriving) {
-      scanner_->driving(ros::Time::now().toSec());
-      announce("The chair is moving (" + msg->text + "). Press to stop.");
-    }
-  }
-
-  /// The supervisor's verdict: a new stop ends the drive, told in the supervisor's words (its
-  /// detail goes to the log); the same stop again is not news.
-  void onSafety(const wheelchair_msgs::SafetyStatus::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!msg->stop) {
-      last_safety_.reset();
-      return;
-    }
-    if (last_safety_ && last_safety_->reason == msg->reason && last_safety_->detail == msg->detail)
-      return;
-    last_safety_ = *msg;
-    if (scanner_->phase() == SwitchScanner::Phase::kDriving)
-      NODELET_INFO("[switch] safety stop: %s", msg->detail.c_str());
-    endDrive("Safety stop: " + msg->sentence + ". Choose a destination to go on.");
-  }
-
-  /// The localizer's verdict: while the rider chooses, a change between localized and not is
-  /// told in the localizer's words (a first "localized" is not news). While the chair drives, a
-  /// loss stops it and the safety stop is what the rider hears.
-  void onLocalization(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    const bool news = localized_ ? *localized_ != msg->localized : !msg->localized;
-    localized_ = msg->localized;
-    if (!news || scanner_->phase() == SwitchScanner::Phase::kDriving) return;
-    announce(!msg->sentence.empty() ? msg->sentence
-             : msg->localized       ? "The chair knows where it is."
-                                    : "The chair does not know where it is.");
-  }
-
-  static std::string formatLength(double metres) {
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.1f m", metres);
-    return text;
-  }
-
-  /// While driving: tells the rider why the drive ended and scans rooms again.
-  void endDrive(const std::string& why) {
-    if (scanner_->phase() != SwitchScanner::Phase::kDriving) return;
-    announce(why);
-    handle(scanner_->finished(ros::Time::now().toSec()));
+    perform(command);
   }
 
   void onGoTo(const std_msgs::String::ConstPtr& msg) {
@@ -251,23 +184,170 @@ class HmiNodelet : public nodelet::Nodelet {
 
   bool onGoToService(wheelchair_msgs::GoToPlace::Request& request,
                      wheelchair_msgs::GoToPlace::Response& response) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    const Place* place = findPlace(scanner_->places(), request.name);
-    response.accepted = place != nullptr;
-    response.message =
-        place ? "Going to " + place->name + "." : "No place called '" + request.name + "'.";
-    announce(response.message);
-    if (place) publishGoal(*place);
+    ClientCommand command;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      const Place* place = findPlace(scanner_->places(), request.name);
+      response.accepted = place != nullptr;
+      response.message =
+          place ? "Going to " + place->name + "." : "No place called '" + request.name + "'.";
+      announce(response.message);
+      if (place) {
+        scanner_->driving(ros::Time::now().toSec());
+        goal_place_ = place->name;
+        command.goal = goalFor(*place);
+        publishState();
+      }
+    }
+    perform(command);
     return true;
   }
 
-  void handle(const ScanOutput& out) {
-    if (out.kind == ScanOutput::Kind::kNone) return;
+  // ---- the navigator -------------------------------------------------------------------------
+
+  /// Sends or cancels the rider's goal (mutex_ not held). A goal the navigator cannot take yet
+  /// (its server not seen yet, e.g. just after start-up) waits up to kConnectTimeout; waiting
+  /// here would block this nodelet's callbacks, the client's among them.
+  void perform(const ClientCommand& command) {
+    if (command.cancel) client_->cancelGoal();
+    if (!command.goal) return;
+    if (!client_->isServerConnected()) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      waiting_goal_ = command.goal;
+      waiting_since_ = ros::WallTime::now();
+      return;
+    }
+    int goal;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      goal = ++goal_count_;
+      own_goal_ = goal;
+      waiting_goal_.reset();
+      told_.clear();
+    }
+    client_->sendGoal(
+        *command.goal,
+        [this, goal](const actionlib::SimpleClientGoalState& state,
+                     const wheelchair_msgs::NavigateResultConstPtr& result) {
+          onDone(goal, state, result);
+        },
+        NavigateClient::SimpleActiveCallback(),
+        [this, goal](const wheelchair_msgs::NavigateFeedbackConstPtr& feedback) {
+          onFeedback(goal, feedback->state);
+        });
+  }
+
+  wheelchair_msgs::NavigateGoal goalFor(const Place& place) const {
+    wheelchair_msgs::NavigateGoal goal;
+    goal.place = place.name;
+    goal.target_pose.header.frame_id = map_frame_;
+    goal.target_pose.header.stamp = ros::Time::now();
+    goal.target_pose.pose = wheelchair_ros::toPoseMsg(place.pose);
+    return goal;
+  }
+
+  /// The navigator's words about the rider's drive: what it does now.
+  void onFeedback(int goal, const NavigatorState& state) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (goal != own_goal_) return;
+    tell(state);
+  }
+
+  /// How the rider's drive ended (exactly once per goal): told in the navigator's sentence,
+  /// then scanning restarts. A goal replaced by someone else's: that drive goes on.
+  void onDone(int goal, const actionlib::SimpleClientGoalState& state,
+              const wheelchair_msgs::NavigateResultConstPtr& result) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (goal != own_goal_) return;
+    own_goal_ = 0;
+    if (result && result->reason == wheelchair_msgs::NavigateResult::REPLACED) return;
+    if (result && !result->sentence.empty()) {
+      NODELET_INFO("[switch] drive ended (%s): %s", state.toString().c_str(),
+                   result->detail.c_str());
+      endDrive(result->sentence);
+    } else {
+      endDrive("The chair did not answer: try again in a moment.");
+    }
+  }
+
+  /// The navigator's state: someone else's drive (rviz, a script) makes the HMI a stop button
+  /// and is told like the rider's own; its end (the state's sentence is then its result's)
+  /// restarts scanning.
+  void onNavigatorState(const NavigatorState::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const bool was_active = navigator_active_;
+    navigator_active_ = msg->active;
+    if (own_goal_ != 0) return;  // the rider's drive: told from its feedback and result
+    if (msg->active) {
+      const std::string place =
+          !msg->place.empty()
+              ? msg->place
+              : placeAt(scanner_->places(), wheelchair_ros::toPose2D(msg->goal.pose));
+      const bool new_place = place != goal_place_;
+      goal_place_ = place;
+      if (scanner_->phase() != SwitchScanner::Phase::kDriving) {
+        scanner_->driving(ros::Time::now().toSec());
+        told_.clear();
+        announce("The chair is moving. Press to stop.");
+      } else if (new_place) {
+        publishState();
+      }
+      tell(*msg);
+    } else if (was_active) {
+      endDrive(msg->sentence.empty() ? "The chair has stopped." : msg->sentence);
+    }
+  }
+
+  /// Tells a new sentence of the navigator once (not the ones of planning and stopping, which
+  /// the rider does not need to hear).
+  void tell(const NavigatorState& state) {
+    if (state.state == NavigatorState::STOPPING || state.sentence.empty()) return;
+    if (state.sentence == told_) return;
+    told_ = state.sentence;
+    announce(state.sentence);
+  }
+
+  /// The localizer's verdict: while the rider chooses, a change between localized and not is
+  /// told in the localizer's words (a first "localized" is not news). While the chair drives,
+  /// the navigator says what a loss means for the drive.
+  void onLocalization(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const bool news = localized_ ? *localized_ != msg->localized : !msg->localized;
+    localized_ = msg->localized;
+    if (!news || scanner_->phase() == SwitchScanner::Phase::kDriving) return;
+    announce(!msg->sentence.empty() ? msg->sentence
+             : msg->localized       ? "The chair knows where it is."
+                                    : "The chair does not know where it is.");
+  }
+
+  /// While driving: tells the rider why the drive ended and scans rooms again.
+  void endDrive(const std::string& why) {
+    if (scanner_->phase() != SwitchScanner::Phase::kDriving) return;
+    announce(why);
+    handle(scanner_->finished(ros::Time::now().toSec()));
+  }
+
+  /// What the scanner wants (mutex_ held): announcements, markers, a stop; a goal or a cancel
+  /// for the navigator comes back to be performed once the lock is released.
+  ClientCommand handle(const ScanOutput& out) {
+    ClientCommand command;
+    if (out.kind == ScanOutput::Kind::kNone) return command;
     announce(out.text);
-    if (out.kind == ScanOutput::Kind::kGo) publishGoal(*out.place);
-    if (out.kind == ScanOutput::Kind::kStop) stop_pub_.publish(std_msgs::Empty());
+    if (out.kind == ScanOutput::Kind::kGo) {
+      goal_place_ = out.place->name;
+      command.goal = goalFor(*out.place);
+    }
+    if (out.kind == ScanOutput::Kind::kStop) {
+      waiting_goal_.reset();
+      // The supervisor and the controller stop at once; the navigator ends the drive (the
+      // rider's own goal, or anyone's: it ends a drive the supervisor stopped for the rider).
+      stop_pub_.publish(std_msgs::Empty());
+      command.cancel = own_goal_ != 0;
+      own_goal_ = 0;
+    }
     publishMarkers(out);
     publishState();
+    return command;
   }
 
   void announce(const std::string& text) {
@@ -277,14 +357,6 @@ class HmiNodelet : public nodelet::Nodelet {
     announce_pub_.publish(msg);
     last_sentence_ = text;
     publishState();
-  }
-
-  void publishGoal(const Place& place) {
-    geometry_msgs::PoseStamped goal;
-    goal.header.frame_id = map_frame_;
-    goal.header.stamp = ros::Time::now();
-    goal.pose = wheelchair_ros::toPoseMsg(place.pose);
-    goal_pub_.publish(goal);
   }
 
   /// Every place as a sphere with its name; the highlighted room or place stands out.
@@ -319,6 +391,18 @@ class HmiNodelet : public nodelet::Nodelet {
 
   std::mutex mutex_;
   std::unique_ptr<SwitchScanner> scanner_;
+  std::unique_ptr<NavigateClient> client_;
+  std::string map_frame_;
+  ros::Publisher stop_pub_, announce_pub_, marker_pub_;
+  ros::Subscriber switch_sub_, go_to_sub_, finished_sub_, state_sub_, localization_sub_;
+  std::optional<wheelchair_msgs::NavigateGoal> waiting_goal_;  ///< for the server to be seen
+  ros::WallTime waiting_since_;
+  static constexpr double kConnectTimeout = 5.0;  ///< [s] wall
+  int goal_count_ = 0;
+  int own_goal_ = 0;               ///< the rider's goal in flight (0: none)
+  bool navigator_active_ = false;  ///< the navigator's last state: a drive in progress
+  std::string told_;               ///< the navigator's sentence last told
+  std::optional<bool> localized_;  ///< the localizer's last verdict
   std::unique_ptr<HmiStatePublisher> state_pub_;
   std::unique_ptr<PlacesFileWatch> places_watch_;
   std::optional<std::vector<Place>> pending_places_;  ///< read, waiting for the room scan
@@ -326,21 +410,6 @@ class HmiNodelet : public nodelet::Nodelet {
   unsigned ticks_ = 0;
   std::string goal_place_;     ///< the place the chair drives to ("" for a spot)
   std::string last_sentence_;  ///< the last announcement
-  std::string map_frame_;
-  ros::Publisher goal_pub_, stop_pub_, announce_pub_, marker_pub_;
-  ros::Subscriber switch_sub_, go_to_sub_, finished_sub_;
-  std::vector<ros::Subscriber> outcome_subs_;
-  bool goal_pending_ = false;
-  ros::Time goal_stamp_;
-  ros::Time command_stamp_;         ///< the rider's latest command: a goal's stamp, a stop's time
-  bool controller_moving_ = false;  ///< the controller's last status, whatever its path
-  /// [s] a path stamped this much before the command still counts as its answer: the planner
-  /// stamps /plan after the goal came, but a goal from another process (rviz) may carry a clock
-  /// a little ahead. An old drive's path is older by that drive's duration (seconds).
-  static constexpr double kStampTolerance = 0.1;
-  wheelchair_msgs::PlanCertificate::ConstPtr certificate_;
-  std::optional<wheelchair_msgs::SafetyStatus> last_safety_;  ///< the stop last told
-  std::optional<bool> localized_;                             ///< the localizer's last verdict
   ros::ServiceServer go_to_srv_;
   ros::Timer timer_;
 };

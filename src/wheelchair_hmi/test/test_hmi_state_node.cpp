@@ -2,6 +2,7 @@
 // rider scans, chooses, confirms and drives, against places_test.yaml: the kitchen (two places)
 // first, then the hall and the bedroom; the sink, then the table.
 #include <wheelchair_msgs/HmiState.h>
+#include <wheelchair_msgs/NavigatorState.h>
 
 #include <geometry_msgs/PoseStamped.h>
 #include <gtest/gtest.h>
@@ -86,22 +87,27 @@ TEST(HmiStateTopic, AGoalFromElsewhereIsDrivingNamedByItsPlaceOrNone) {
   ros::NodeHandle nh;
   LatestState latest(nh);
   const HmiState::ConstPtr& state = latest.msg;
-  ros::Publisher goal_pub = nh.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 1);
-  ASSERT_TRUE(waitFor([&] { return state && goal_pub.getNumSubscribers() > 0; }));
-  geometry_msgs::PoseStamped goal;
-  goal.header.frame_id = "map";
-  goal.header.stamp = ros::Time::now();
-  goal.pose.position.x = 8.0;  // the bed (yaw 0)
-  goal.pose.position.y = 6.0;
-  goal.pose.orientation.w = 1.0;
-  goal_pub.publish(goal);
+  // A drive someone else gave the navigator (rviz, a script) reaches the HMI as the navigator's
+  // state: active, with its goal.
+  ros::Publisher navigator =
+      nh.advertise<wheelchair_msgs::NavigatorState>("navigator/state", 1, true);
+  ASSERT_TRUE(waitFor([&] { return state && navigator.getNumSubscribers() > 0; }));
+  wheelchair_msgs::NavigatorState drive;
+  drive.state = wheelchair_msgs::NavigatorState::DRIVING;
+  drive.active = true;
+  drive.goal_id = "elsewhere-1";
+  drive.goal.header.frame_id = "map";
+  drive.goal.pose.position.x = 8.0;  // the bed (yaw 0)
+  drive.goal.pose.position.y = 6.0;
+  drive.goal.pose.orientation.w = 1.0;
+  navigator.publish(drive);
   ASSERT_TRUE(waitFor([&] { return state->state == HmiState::DRIVING; }));
   EXPECT_EQ(state->place, "bed");
   EXPECT_EQ(state->items, (Strings{"bed"}));
 
-  goal.header.stamp = ros::Time::now();
-  goal.pose.position.x = 6.5;  // a spot that is no place
-  goal_pub.publish(goal);
+  drive.goal_id = "elsewhere-2";
+  drive.goal.pose.position.x = 6.5;  // a spot that is no place
+  navigator.publish(drive);
   ASSERT_TRUE(waitFor([&] { return state->place.empty(); }));
   EXPECT_EQ(state->state, HmiState::DRIVING);
   EXPECT_TRUE(state->items.empty());

@@ -12,13 +12,20 @@ void ObstacleDiscs::add(const Disc& disc) {
   if (!disc.centre.allFinite() || !std::isfinite(disc.appear_time) || !(disc.radius > 0.0) ||
       !std::isfinite(disc.radius))
     throw std::invalid_argument("obstacle disc: need a finite centre and time and radius > 0");
+  if (!disc.velocity.allFinite() || std::isnan(disc.vanish_time) ||
+      !(disc.vanish_time > disc.appear_time))
+    throw std::invalid_argument(
+        "obstacle disc: need a finite velocity and a vanish time after the appear time");
   discs_.push_back(disc);
 }
 
 std::vector<Disc> ObstacleDiscs::presentAt(double now) const {
   std::vector<Disc> out;
-  for (const Disc& d : discs_)
-    if (now >= d.appear_time) out.push_back(d);
+  for (const Disc& d : discs_) {
+    if (now < d.appear_time || now >= d.vanish_time) continue;
+    out.push_back(d);
+    out.back().centre += d.velocity * (now - d.appear_time);
+  }
   return out;
 }
 

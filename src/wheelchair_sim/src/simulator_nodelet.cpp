@@ -10,6 +10,7 @@
 #include <wheelchair_msgs/WheelTorques.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/parameters.h>
+#include <wheelchair_sim/AddMovingObstacle.h>
 #include <wheelchair_sim/AddObstacle.h>
 #include <wheelchair_sim/EnableLaser.h>
 #include <wheelchair_sim/SetPose.h>
@@ -93,6 +94,8 @@ class SimulatorNodelet : public nodelet::Nodelet {
     reset_srv_ = nh.advertiseService("sim/reset", &SimulatorNodelet::onReset, this);
     add_obstacle_srv_ =
         nh.advertiseService("sim/add_obstacle", &SimulatorNodelet::onAddObstacle, this);
+    add_moving_obstacle_srv_ = nh.advertiseService("sim/add_moving_obstacle",
+                                                   &SimulatorNodelet::onAddMovingObstacle, this);
     clear_obstacles_srv_ =
         nh.advertiseService("sim/clear_obstacles", &SimulatorNodelet::onClearObstacles, this);
     laser_srv_ = nh.advertiseService("sim/enable_laser", &SimulatorNodelet::onEnableLaser, this);
@@ -149,22 +152,39 @@ class SimulatorNodelet : public nodelet::Nodelet {
   }
 
   bool onAddObstacle(AddObstacle::Request& req, AddObstacle::Response& res) {
-    std::lock_guard<std::mutex> lock(mutex_);
     Disc disc;
     disc.centre = {req.x, req.y};
     disc.radius = req.radius;
     disc.appear_time = req.appear_time;
+    res.success = addDisc(disc, res.message);
+    return true;
+  }
+
+  /// A person walking (or standing, then leaving): velocity and a vanish time.
+  bool onAddMovingObstacle(AddMovingObstacle::Request& req, AddMovingObstacle::Response& res) {
+    Disc disc;
+    disc.centre = {req.x, req.y};
+    disc.radius = req.radius;
+    disc.appear_time = req.appear_time;
+    disc.velocity = {req.vx, req.vy};
+    disc.vanish_time = req.vanish_time == 0.0 ? INFINITY : req.vanish_time;
+    res.success = addDisc(disc, res.message);
+    return true;
+  }
+
+  /// Adds `disc` to the world; false with the reason in `message` when it is refused.
+  bool addDisc(const Disc& disc, std::string& message) {
+    std::lock_guard<std::mutex> lock(mutex_);
     try {
       chair_sim_->simulator().obstacles().add(disc);
     } catch (const std::invalid_argument& e) {
-      res.success = false;
-      res.message = e.what();
-      return true;
+      message = e.what();
+      return false;
     }
-    res.success = true;
-    res.message = "obstacle added";
-    NODELET_INFO("obstacle r=%.2f m at (%.2f, %.2f) from t=%.2f s", req.radius, req.x, req.y,
-                 req.appear_time);
+    message = "obstacle added";
+    NODELET_INFO("obstacle r=%.2f m at (%.2f, %.2f) moving (%.2f, %.2f) m/s from t=%.2f to %.2f s",
+                 disc.radius, disc.centre.x(), disc.centre.y(), disc.velocity.x(),
+                 disc.velocity.y(), disc.appear_time, disc.vanish_time);
     return true;
   }
 
@@ -333,8 +353,8 @@ class SimulatorNodelet : public nodelet::Nodelet {
       trajectory_pub_;
   nav_msgs::Path trajectory_;
   ros::Subscriber torque_sub_;
-  ros::ServiceServer teleport_srv_, reset_srv_, add_obstacle_srv_, clear_obstacles_srv_, laser_srv_,
-      rear_laser_srv_;
+  ros::ServiceServer teleport_srv_, reset_srv_, add_obstacle_srv_, add_moving_obstacle_srv_,
+      clear_obstacles_srv_, laser_srv_, rear_laser_srv_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_tf_;
 };

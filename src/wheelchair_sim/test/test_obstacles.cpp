@@ -49,6 +49,46 @@ TEST(Obstacles, LaserSeesAPersonOnlyOnceThere) {
   EXPECT_NEAR(after, expected, 1e-3);
 }
 
+TEST(Obstacles, AWalkingPersonIsWhereItsVelocityTookItUntilItVanishes) {
+  ObstacleDiscs obstacles;
+  Disc walker;
+  walker.centre = {1.0, 2.0};
+  walker.appear_time = 10.0;
+  walker.velocity = {0.5, -0.25};
+  walker.vanish_time = 14.0;
+  obstacles.add(walker);
+  EXPECT_TRUE(obstacles.presentAt(9.99).empty());
+  const auto at12 = obstacles.presentAt(12.0);
+  ASSERT_EQ(at12.size(), 1u);
+  EXPECT_NEAR(at12[0].centre.x(), 2.0, 1e-12);
+  EXPECT_NEAR(at12[0].centre.y(), 1.5, 1e-12);
+  EXPECT_TRUE(obstacles.presentAt(14.0).empty());
+  walker.vanish_time = 10.0;
+  EXPECT_THROW(obstacles.add(walker), std::invalid_argument);
+  walker.vanish_time = INFINITY;
+  walker.velocity = {NAN, 0.0};
+  EXPECT_THROW(obstacles.add(walker), std::invalid_argument);
+}
+
+TEST(Obstacles, TheLaserSeesAWalkingPersonWhereItIsNow) {
+  const auto chair = test::chair();
+  SimParams params;
+  params.laser_range_noise = 0.0;
+  SimulatedChair sim(chair, params, test::wallWorld(8.0));
+  Disc walker;
+  walker.centre = {2.0, 0.0};
+  walker.velocity = {1.0, 0.0};  // walking away along the beam at 1 m/s
+  sim.simulator().obstacles().add(walker);
+  const int centre_beam = params.laser_beams / 2;
+  double last = NAN, when = NAN;
+  for (int i = 0; i < 100; ++i) {
+    const SensorOutputs out = sim.advance(0.01);
+    if (out.scan) last = out.scan->ranges[centre_beam], when = sim.simulator().time();
+  }
+  ASSERT_FALSE(std::isnan(last));
+  EXPECT_NEAR(last, 2.0 + when - walker.radius - chair.laser_x, 0.011);
+}
+
 TEST(Obstacles, DrivingIntoAPersonIsACollisionAndTeleportOntoOneIsRefused) {
   const auto chair = test::chair();
   SimParams params;

@@ -1,11 +1,13 @@
 // Obstacles that are not in the map: discs (a person is a 0.3 m disc) that appear at a given
-// simulated time. The laser sees them and the chair collides with them, like map cells.
+// simulated time, may walk at a constant velocity and may vanish again. The laser sees them
+// and the chair collides with them, like map cells.
 #pragma once
 
 #include <wheelchair_core/polygon.h>
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <vector>
 
 namespace wheelchair_sim {
@@ -14,15 +16,20 @@ struct Disc {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();  ///< [m] in the world (map) frame
   double radius = 0.15;                              ///< [m]
   double appear_time = 0.0;  ///< [s] of simulated time from which it is there
+  /// [m/s] it walks from `centre` (where it is at appear_time) at this velocity
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
+  double vanish_time = INFINITY;  ///< [s] of simulated time from which it is gone
 };
 
 class ObstacleDiscs {
  public:
-  /// Throws std::invalid_argument for a non-finite centre or time, or radius <= 0.
+  /// Throws std::invalid_argument for a non-finite centre, velocity or appear time, radius <= 0,
+  /// or a vanish time not after the appear time.
   void add(const Disc& disc);
   void clear() { discs_.clear(); }
   const std::vector<Disc>& all() const { return discs_; }
-  /// The discs present at simulated time `now`.
+  /// The discs present at simulated time `now` (appeared, not vanished), each where it has
+  /// walked to by then.
   std::vector<Disc> presentAt(double now) const;
 
  private:

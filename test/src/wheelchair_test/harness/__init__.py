@@ -7,6 +7,8 @@
   worlds     the test worlds' named places
   rider      Rider: a pose estimate, a goal (pose, named place, one-switch presses) and its
              outcome, what a rider and a carer see, the simulator's truth (rospy)
+  drives     Drives: a client of the navigator's actions (navigate, move_base), every result
+             message per goal id, /navigator/state (rospy, actionlib)
 
 Import it as `wheelchair_test.harness` (catkin_python_setup: any sourced workspace), or from a
 checkout by path: sys.path.insert(0, "<repo>/test/src"). The rider needs rospy and the

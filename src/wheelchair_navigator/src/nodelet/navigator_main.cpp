@@ -1,0 +1,6 @@
+#include <wheelchair_ros/nodelet_main.h>
+
+int main(int argc, char** argv) {
+  return wheelchair_ros::runNodeletMain(argc, argv, "navigator",
+                                        "wheelchair_navigator/NavigatorNodelet");
+}
