@@ -85,6 +85,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     pnh.param("global_localization_on_start", global_on_start_, global_on_start_);
     pnh.param("scan_queue_size", scan_queue_size_, scan_queue_size_);
     pnh.param("tf_timeout", tf_timeout_, tf_timeout_);
+    pnh.param("max_map_cells", map_limits_.max_cells, map_limits_.max_cells);
     int seed = 1;
     pnh.param("seed", seed, seed);
     seed_ = static_cast<uint64_t>(seed);
@@ -121,7 +122,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     std::shared_ptr<const LocalizationMap> map;
     try {
       map = std::make_shared<LocalizationMap>(
-          wheelchair_mapping::toMrptGrid(wheelchair_ros::fromOccupancyGrid(*msg)),
+          wheelchair_mapping::toMrptGrid(wheelchair_ros::fromOccupancyGrid(*msg, map_limits_)),
           params_.measurement.max_distance);
     } catch (const std::exception& e) {
       NODELET_ERROR("kld: map rejected: %s", e.what());
@@ -323,6 +324,8 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   double transform_tolerance_ = 0.1;
   int expected_beams_ = 0;
   int scan_queue_size_ = 5;  ///< scans waiting for odometry (0.5 s of lag at 10 Hz)
+  /// Any node can publish /map: a bigger or broken one is refused, the last good one kept.
+  wheelchair_core::MapLimits map_limits_;
   double tf_timeout_ = 0.5;  ///< no usable scan for this long while scans arrive: not localized
   ros::Time last_tf_ok_, last_scan_stamp_;
   bool global_on_start_ = false;

@@ -63,6 +63,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     map_frame_ = setup.host.map_frame;
     base_frame_ = setup.host.base_frame;
     max_pose_age_ = setup.host.max_pose_age;
+    map_limits_ = setup.host.map_limits;
     tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
     plan_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
     cert_pub_ = nh.advertise<wheelchair_msgs::PlanCertificate>("plan_certificate", 1, true);
@@ -89,10 +90,17 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   }
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    // Any node can publish /map: a broken or oversized map is refused before anything is
+    // prepared, and the planner keeps the last good one (it went without any before).
+    const std::string problem = wheelchair_ros::occupancyGridProblem(*msg, map_limits_);
+    if (!problem.empty()) {
+      NODELET_ERROR("planner host: map refused, keeping the last good one: %s", problem.c_str());
+      return;
+    }
     std::lock_guard<std::mutex> lock(mutex_);
     const ros::WallTime started = ros::WallTime::now();
     try {
-      planner_->setMap(wheelchair_ros::fromOccupancyGrid(*msg));
+      planner_->setMap(wheelchair_ros::fromOccupancyGrid(*msg, map_limits_));
       have_map_ = true;
     } catch (const std::exception& e) {
       have_map_ = false;
@@ -209,6 +217,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   boost::shared_ptr<GlobalPlanner> planner_;
   std::string planner_name_, map_frame_, base_frame_;
   double max_pose_age_ = 0.0;
+  wheelchair_core::MapLimits map_limits_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   ros::Publisher plan_pub_, cert_pub_, potential_pub_;
   ros::Subscriber map_sub_, goal_sub_;

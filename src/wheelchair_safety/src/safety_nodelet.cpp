@@ -31,14 +31,17 @@ namespace wheelchair_safety {
 /// Every private parameter of the nodelet: the supervisor's limits and its own.
 struct SafetyNodeletConfig {
   SafetyLimits limits;
-  double rate = 20.0;  ///< [Hz] checks per second (and at once on a new goal)
+  wheelchair_core::MapLimits map_limits;  ///< a bigger or broken /map is refused
+  double rate = 20.0;                     ///< [Hz] checks per second (and at once on a new goal)
   std::string map_frame = "map";
   std::string base_frame = "base_link";
 
   std::string validate() const {
     const std::string limits_problem = limits.validate();
+    const std::string map_problem = map_limits.validate();
     wheelchair_core::ConfigChecks checks;
     checks.check(limits_problem.empty(), limits_problem)
+        .check(map_problem.empty(), map_problem)
         .positive("rate", rate)
         .check(!map_frame.empty(), "map_frame must not be empty")
         .check(!base_frame.empty(), "base_frame must not be empty");
@@ -48,6 +51,7 @@ struct SafetyNodeletConfig {
 
 void readSafetyNodeletConfig(wheelchair_core::ConfigReader& reader, SafetyNodeletConfig& config) {
   readSafetyLimits(reader, config.limits);
+  wheelchair_core::readMapLimits(reader, config.map_limits);
   reader.read("rate", config.rate);
   reader.read("map_frame", config.map_frame);
   reader.read("base_frame", config.base_frame);
@@ -61,6 +65,7 @@ class SafetyNodelet : public nodelet::Nodelet {
         getPrivateNodeHandle(), readSafetyNodeletConfig);
     map_frame_ = config.map_frame;
     base_frame_ = config.base_frame;
+    map_limits_ = config.map_limits;
     supervisor_ = std::make_unique<SafetySupervisor>(config.limits);
     tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
 
@@ -77,9 +82,17 @@ class SafetyNodelet : public nodelet::Nodelet {
     timer_ = nh.createTimer(ros::Duration(1.0 / config.rate), &SafetyNodelet::onTimer, this);
   }
 
+  /// A map any node may have published: refused with the reason unless usable (an uncaught
+  /// throw here aborted the whole chair process); the supervisor keeps the last good map.
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    const std::string problem = wheelchair_ros::occupancyGridProblem(*msg, map_limits_);
+    if (!problem.empty()) {
+      NODELET_ERROR("safety: map refused, keeping the last good one: %s", problem.c_str());
+      return;
+    }
+    wheelchair_core::OccupancyMap map = wheelchair_ros::fromOccupancyGrid(*msg, map_limits_);
     std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onMap(wheelchair_ros::fromOccupancyGrid(*msg));
+    supervisor_->onMap(map);
   }
 
   void onPlan(const nav_msgs::Path::ConstPtr& msg) {
@@ -177,6 +190,7 @@ class SafetyNodelet : public nodelet::Nodelet {
   std::unique_ptr<SafetySupervisor> supervisor_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   std::string map_frame_, base_frame_;
+  wheelchair_core::MapLimits map_limits_;
   bool have_status_ = false, localized_ = false;
   std::string why_not_ = "no localizer status yet";
   Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Identity();
