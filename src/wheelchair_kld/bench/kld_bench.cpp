@@ -1,30 +1,32 @@
 // bench/kld measurement: KLD-MCL vs the same filter with a fixed particle count vs MRPT's
 // CMonteCarloLocalization2D with its own adaptive (KLD) sample size, on simulated drives in the
-// project's worlds and the Intel real log. The fixed count compared with is measured first: the
+// project's worlds and the Intel real log (its path on the command line; bench/kld/run gives
+// ../shared/data's). The fixed count compared with is measured first: the
 // smallest count whose global localization in the office succeeds as often as KLD's (row
 // office_global / fixed_mcl / particles_needed_for_kld_success). Prints only a JSON array of
 // {case, method, metric, value, unit}.
 #include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/maps/CMultiMetricMap.h>
-#include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
-#include <wheelchair_kld/drive_evaluation.h>
+#include <wheelchair_logs/carmen_log.h>
 
-#include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iostream>
-#include <limits>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
-using mrpt::math::TPose2D;
+#include "drive_evaluation.h"
+
+using wheelchair_core::LaserScan2D;
+using wheelchair_core::Pose2D;
 using namespace wheelchair_kld;
+using namespace wheelchair_kld::test;
 
 namespace {
 
@@ -51,21 +53,18 @@ void report(const std::string& c, const std::string& method, const DriveSummary&
   row(c, method, "mean_update_cpu_time", s.mean_cpu_ms, "ms");
 }
 
-mrpt::math::CMatrixDouble33 diagCov(double sxy, double sth) {
-  mrpt::math::CMatrixDouble33 c;
-  c.setZero();
-  c(0, 0) = c(1, 1) = sxy * sxy;
-  c(2, 2) = sth * sth;
-  return c;
+Eigen::Matrix3d diagCov(double sxy, double sth) {
+  return Eigen::Vector3d(sxy * sxy, sxy * sxy, sth * sth).asDiagonal();
 }
 
-mrpt::obs::CObservation2DRangeScan::Ptr toMrptObservation(const LaserScan& s) {
+/// The scan as MRPT's observation (for MRPT's own filter and map building).
+mrpt::obs::CObservation2DRangeScan::Ptr toMrptObservation(const LaserScan2D& s,
+                                                          const Pose2D& sensor_pose) {
   auto obs = mrpt::obs::CObservation2DRangeScan::Create();
   obs->aperture = static_cast<float>(s.angle_increment * (s.ranges.size() - 1));
   obs->rightToLeft = true;
   obs->maxRange = static_cast<float>(s.range_max);
-  obs->sensorPose =
-      mrpt::poses::CPose3D(s.sensor_pose.x, s.sensor_pose.y, 0, s.sensor_pose.phi, 0, 0);
+  obs->sensorPose = mrpt::poses::CPose3D(sensor_pose.x, sensor_pose.y, 0, sensor_pose.yaw, 0, 0);
   obs->resizeScan(s.ranges.size());
   for (size_t i = 0; i < s.ranges.size(); ++i) {
     const bool ok = std::isfinite(s.ranges[i]) && s.ranges[i] < s.range_max;
@@ -75,34 +74,22 @@ mrpt::obs::CObservation2DRangeScan::Ptr toMrptObservation(const LaserScan& s) {
   return obs;
 }
 
-/// Real laser logs (../shared/data): FLASER lines of a derived_*_gt_rawodom log, every
-/// `every`-th: the SLAM-corrected pose is the reference, the raw odometry the filter's input.
-std::vector<DriveSample> loadCarmenDrive(const std::string& path, int every) {
-  constexpr double kNoEcho = 80.0;  // readings of ~81.9 m mean "no echo" (data README)
+/// A real laser log with a reference (../shared/data's derived_*_gt_rawodom logs): the
+/// FLASER pose (the laser's, SLAM-corrected) is the reference, the odom fields (raw odometry) the
+/// filter's input. Empty if the file cannot be read.
+std::vector<DriveSample> loadCarmenDrive(const std::string& path) {
+  wheelchair_logs::CarmenOptions options;
+  options.range_min = 0.05;
+  options.range_max = 50.0;  // readings of ~81.9 m are "no echo" (no_echo_range 80 m)
   std::vector<DriveSample> out;
-  std::ifstream in(path);
-  std::string line;
-  int index = 0;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string tag;
-    int n = 0;
-    if (!(ls >> tag >> n) || tag != "FLASER" || n < 2 || index++ % every != 0) continue;
-    DriveSample s;
-    s.scan.ranges.resize(n);
-    for (auto& r : s.scan.ranges) {
-      double v = 0;
-      ls >> v;
-      r = v >= kNoEcho ? std::numeric_limits<float>::infinity() : static_cast<float>(v);
-    }
-    ls >> s.truth.x >> s.truth.y >> s.truth.phi >> s.odom.x >> s.odom.y >> s.odom.phi;
-    if (!ls) continue;
-    // n = 180: -90..+89 deg, 181: -90..+90, 360/361: half-degree steps (data README).
-    s.scan.angle_increment = (n >= 360 ? 0.5 : 1.0) * M_PI / 180;
-    s.scan.angle_min = -M_PI / 2;
-    s.scan.range_max = 50.0;
-    s.scan.sensor_pose = TPose2D(0, 0, 0);  // the FLASER pose is the laser's
-    out.push_back(std::move(s));
+  try {
+    wheelchair_logs::CarmenLogReader reader(path, options);
+    for (wheelchair_logs::LogScan s; reader.next(s);)
+      out.push_back({s.laser_pose, s.odom_pose, std::move(s.scan), Pose2D{0, 0, 0}});
+    if (reader.corruptLines() > 0)
+      std::cerr << "bench/kld: " << path << ": " << reader.corruptLines() << " corrupt lines\n";
+  } catch (const std::runtime_error& e) {
+    std::cerr << "bench/kld: " << e.what() << "\n";
   }
   return out;
 }
@@ -112,8 +99,8 @@ mrpt::maps::COccupancyGridMap2D mapFromDrive(const std::vector<DriveSample>& dri
   mrpt::maps::COccupancyGridMap2D grid(-10, 10, -10, 10, res);
   grid.insertionOptions.maxDistanceInsertion = 30.0f;
   for (const auto& s : drive)
-    grid.insertObservation(*toMrptObservation(s.scan),
-                           mrpt::poses::CPose3D(s.truth.x, s.truth.y, 0, s.truth.phi, 0, 0));
+    grid.insertObservation(*toMrptObservation(s.scan, s.sensor_pose),
+                           mrpt::poses::CPose3D(s.truth.x, s.truth.y, 0, s.truth.yaw, 0, 0));
   return grid;
 }
 
@@ -134,8 +121,8 @@ std::vector<StepRecord> runMrpt(const LocalizationMap& map, const std::vector<Dr
   pdf.options.KLD_params.KLD_delta = kp.delta;
   pdf.options.KLD_params.KLD_minSampleSize = kp.min_particles;
   pdf.options.KLD_params.KLD_maxSampleSize = kp.max_particles;
-  const TPose2D& t0 = drive.front().truth;
-  pdf.resetUniform(t0.x - 0.2, t0.x + 0.2, t0.y - 0.2, t0.y + 0.2, t0.phi - 0.1, t0.phi + 0.1,
+  const Pose2D& t0 = drive.front().truth;
+  pdf.resetUniform(t0.x - 0.2, t0.x + 0.2, t0.y - 0.2, t0.y + 0.2, t0.yaw - 0.1, t0.yaw + 0.1,
                    2000);
   mrpt::bayes::CParticleFilter pf;
   pf.m_options.adaptiveSampleSize = true;
@@ -156,18 +143,19 @@ std::vector<StepRecord> runMrpt(const LocalizationMap& map, const std::vector<Dr
   motion.thrunModel.additional_std_phi = static_cast<float>(mn.min_theta_std);
   pf.m_options.powFactor = kp.measurement.likelihood_exponent;
   std::vector<StepRecord> out;
-  TPose2D last = drive.front().odom;
+  auto mrptPose = [](const Pose2D& p) { return mrpt::poses::CPose2D(p.x, p.y, p.yaw); };
+  Pose2D last = drive.front().odom;
   bool first = true;
   for (const auto& s : drive) {
     StepRecord r;
-    const mrpt::poses::CPose2D inc = mrpt::poses::CPose2D(s.odom) - mrpt::poses::CPose2D(last);
+    const mrpt::poses::CPose2D inc = mrptPose(s.odom) - mrptPose(last);
     if (first || inc.norm() >= kp.update_min_d || std::abs(inc.phi()) >= kp.update_min_a) {
       mrpt::obs::CActionCollection actions;
       mrpt::obs::CActionRobotMovement2D act;
       act.computeFromOdometry(inc, motion);
       actions.insert(act);
       mrpt::obs::CSensoryFrame sf;
-      sf.insert(toMrptObservation(s.scan));
+      sf.insert(toMrptObservation(s.scan, s.sensor_pose));
       const UpdateTimer timer;
       pf.executeOn(pdf, &actions, &sf);
       timer.stop(r);
@@ -178,7 +166,7 @@ std::vector<StepRecord> runMrpt(const LocalizationMap& map, const std::vector<Dr
     mrpt::poses::CPose2D mean;
     pdf.getMean(mean);
     r.error_xy = std::hypot(mean.x() - s.truth.x, mean.y() - s.truth.y);
-    r.error_theta = std::abs(mrpt::math::wrapToPi(mean.phi() - s.truth.phi));
+    r.error_theta = std::abs(wheelchair_core::angleDifference(mean.phi(), s.truth.yaw));
     r.particles = static_cast<int>(pdf.size());
     out.push_back(r);
   }
@@ -228,12 +216,10 @@ void compareTracking(const std::string& c, const std::shared_ptr<const Localizat
 /// The Intel Research Lab log: KLD vs fixed-size MCL vs MRPT's filter, from a 10 cm / 3 deg
 /// prior at the first scan, on a map built from the same log's corrected scans (so the map fits
 /// better than a separately surveyed one would: the figures are optimistic for all three).
-void benchRealLog(int fixed_needed) {
-  const std::string path = std::string(SHARED_DATA_DIR) + "/intel/derived_intel_gt_rawodom.clf";
-  const auto drive = loadCarmenDrive(path, 1);
+void benchRealLog(const std::string& path, int fixed_needed) {
+  const auto drive = path.empty() ? std::vector<DriveSample>() : loadCarmenDrive(path);
   if (drive.empty()) {
-    std::cerr << "bench/kld: " << path
-              << " not found (../shared/data is absent): real-log case skipped\n";
+    std::cerr << "bench/kld: no scans from '" << path << "': real-log case skipped\n";
     return;
   }
   KldParams kp;
@@ -311,17 +297,37 @@ int fixedCountForKldSuccess(const std::string& worlds, const KldParams& kp) {
   return needed;
 }
 
+const char* kUsage =
+    "usage: kld_bench [--worlds DIR] [--intel-log FILE] [real]\n"
+    "  --worlds DIR      the project's test worlds (default test/worlds)\n"
+    "  --intel-log FILE  derived_intel_gt_rawodom.clf (corrected FLASER poses + raw odometry);\n"
+    "                    without it the real-log case is skipped\n"
+    "  real              only the fixed-count search and the real-log case\n";
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string worlds = argc > 1 ? argv[1] : "test/worlds";
-  const std::string only = argc > 2 ? argv[2] : "";  // "real": only the real-log case
+  std::string worlds = "test/worlds", intel_log;
+  bool only_real = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--worlds" && i + 1 < argc) {
+      worlds = argv[++i];
+    } else if (arg == "--intel-log" && i + 1 < argc) {
+      intel_log = argv[++i];
+    } else if (arg == "real") {
+      only_real = true;
+    } else {
+      std::cerr << "kld_bench: bad argument '" << arg << "'\n" << kUsage;
+      return 2;
+    }
+  }
   const KldParams kp;
   // Measured first: every fixed-size comparison below uses the count it needs for KLD's
   // global-localization success (the real-log case too).
   const int needed = fixedCountForKldSuccess(worlds, kp);
-  benchRealLog(needed);
-  if (only != "real") {
+  benchRealLog(intel_log, needed);
+  if (!only_real) {
     for (const std::string world : {"flat", "office"}) {
       const auto map = std::make_shared<LocalizationMap>(
           loadWorldGrid(worlds + "/" + world + ".yaml"), kp.measurement.max_distance);

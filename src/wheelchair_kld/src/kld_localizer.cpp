@@ -3,6 +3,7 @@
 #include <wheelchair_kld/kld_localizer.h>
 #include <wheelchair_kld/odometry_motion_model.h>
 #include <wheelchair_kld/pose_bins.h>
+#include <wheelchair_kld/scan_validation.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -15,6 +16,8 @@ using mrpt::math::TPose2D;
 
 namespace {
 constexpr double kGoldenRatioFraction = 0.6180339887498949;  // (sqrt(5) - 1) / 2
+
+TPose2D toMrpt(const wheelchair_core::Pose2D& p) { return TPose2D(p.x, p.y, p.yaw); }
 }  // namespace
 
 KldLocalizer::KldLocalizer(std::shared_ptr<const LocalizationMap> map, const KldParams& params,
@@ -59,17 +62,16 @@ void KldLocalizer::initGlobal() {
   normalizeAndEstimate();
 }
 
-void KldLocalizer::initGaussian(const TPose2D& mean, const mrpt::math::CMatrixDouble33& cov) {
+void KldLocalizer::initGaussian(const wheelchair_core::Pose2D& mean, const Eigen::Matrix3d& cov) {
   const int n = params_.fixed_particles > 0 ? params_.fixed_particles : params_.init_particles;
-  Eigen::Matrix3d c = cov.asEigen();
-  Eigen::LLT<Eigen::Matrix3d> llt(c + 1e-12 * Eigen::Matrix3d::Identity());
+  Eigen::LLT<Eigen::Matrix3d> llt(cov + 1e-12 * Eigen::Matrix3d::Identity());
   const Eigen::Matrix3d l = llt.matrixL();
   particles_.assign(n, Particle());
   for (auto& p : particles_) {
     const Eigen::Vector3d z(rng_.drawGaussian1D(0, 1), rng_.drawGaussian1D(0, 1),
                             rng_.drawGaussian1D(0, 1));
     const Eigen::Vector3d e = l * z;
-    p.d = TPose2D(mean.x + e(0), mean.y + e(1), mrpt::math::wrapToPi(mean.phi + e(2)));
+    p.d = TPose2D(mean.x + e(0), mean.y + e(1), mrpt::math::wrapToPi(mean.yaw + e(2)));
     p.log_w = -std::log(static_cast<double>(n));
   }
   resetRecovery();
@@ -77,21 +79,32 @@ void KldLocalizer::initGaussian(const TPose2D& mean, const mrpt::math::CMatrixDo
   normalizeAndEstimate();
 }
 
-UpdateResult KldLocalizer::update(const TPose2D& odom, const LaserScan& scan, bool force) {
+std::vector<wheelchair_core::Pose2D> KldLocalizer::particlePoses() const {
+  std::vector<wheelchair_core::Pose2D> poses;
+  poses.reserve(particles_.size());
+  for (const auto& p : particles_) poses.push_back({p.d.x, p.d.y, p.d.phi});
+  return poses;
+}
+
+UpdateResult KldLocalizer::update(const wheelchair_core::Pose2D& odom_pose,
+                                  const wheelchair_core::LaserScan2D& scan,
+                                  const wheelchair_core::Pose2D& sensor_pose, bool force) {
   if (expected_beams_ == 0) expected_beams_ = static_cast<int>(scan.ranges.size());
-  last_rejection_ = validateScan(scan, expected_beams_);
-  if (last_rejection_.empty() &&
-      !(std::isfinite(odom.x) && std::isfinite(odom.y) && std::isfinite(odom.phi)))
+  last_rejection_ = validateScan(scan, expected_beams_, params_.min_echo_fraction);
+  if (last_rejection_.empty() && !sensor_pose.isFinite())
+    last_rejection_ = "laser pose in the base frame is not finite";
+  if (last_rejection_.empty() && !odom_pose.isFinite())
     last_rejection_ = "odometry pose is not finite";
   if (!last_rejection_.empty()) return UpdateResult::kRejected;
   if (!initialized()) return UpdateResult::kNotInitialized;
+  const TPose2D odom = toMrpt(odom_pose);
   const TPose2D from = last_odom_.value_or(odom);
   const double moved = std::hypot(odom.x - from.x, odom.y - from.y);
   const double turned = std::abs(mrpt::math::wrapToPi(odom.phi - from.phi));
   if (!force && !pending_first_update_ && moved < params_.update_min_d &&
       turned < params_.update_min_a)
     return UpdateResult::kNoMotion;
-  measurement_.setScan(scan);
+  measurement_.setScan(scan, sensor_pose);
   sampleStep(from, odom);
   if (pending_refine_) refineAtFirstScan(measurement_);
   pending_refine_ = false;
@@ -99,7 +112,7 @@ UpdateResult KldLocalizer::update(const TPose2D& odom, const LaserScan& scan, bo
   pending_first_update_ = false;
   normalizeAndEstimate();
   keepPlausibleHypotheses();
-  inliers_ = measurement_.inlierFraction(estimate_.mean, params_.inlier_tolerance);
+  inliers_ = measurement_.inlierFraction(toMrpt(estimate_.mean), params_.inlier_tolerance);
   checkFit();
   return UpdateResult::kUpdated;
 }
@@ -237,7 +250,7 @@ void KldLocalizer::keepPlausibleHypotheses() {
     const double w = e.cluster_weights[c];
     if (static_cast<int>(c) == e.best_cluster || w < 0.01 || w >= params_.hypothesis_min_weight)
       continue;
-    const TPose2D mean = clusterMean(particles_, e, static_cast<int>(c));
+    const TPose2D mean = toMrpt(clusterMean(particles_, e, static_cast<int>(c)));
     if (measurement_.inlierFraction(mean, params_.inlier_tolerance) < params_.fit_min_mean)
       continue;
     log_scale[c] = std::log(params_.hypothesis_min_weight / w);
@@ -249,34 +262,51 @@ void KldLocalizer::keepPlausibleHypotheses() {
   normalizeAndEstimate();
 }
 
-LocalizationStatus KldLocalizer::status() const {
-  LocalizationStatus s;
-  std::ostringstream why;
+wheelchair_core::LocalizationStatus KldLocalizer::status() const {
+  using State = wheelchair_core::LocalizationState;
+  wheelchair_core::LocalizationStatus s;
+  s.particles = static_cast<int>(particles_.size());
   if (!initialized()) {
-    s.reason = "not initialized (no initial pose, no global localization)";
+    s.state = State::kUninitialized;
+    s.detail = "not initialized (no initial pose, no global localization)";
     return s;
   }
   const double sxy = std::sqrt(std::max(estimate_.cov(0, 0), estimate_.cov(1, 1)));
   const double sth = std::sqrt(estimate_.cov(2, 2));
+  s.position_std = sxy;
+  s.heading_std = sth;
+  s.hypotheses = estimate_.cluster_count;
+  s.best_weight = estimate_.cluster_weight;
+  if (!pending_first_update_) {
+    s.inlier_fraction = inliers_;
+    s.mean_fit = meanFit();
+  }
+  std::ostringstream why;
+  s.state = State::kLocalized;
   if (pending_first_update_) {
+    s.state = State::kLocalizing;
     why << "waiting for the first scan after initialization";
   } else if (estimate_.cluster_weight < params_.localized_min_cluster_weight) {
+    s.state = State::kAmbiguous;
     why << "ambiguous: " << estimate_.cluster_count << " pose hypotheses (best holds "
         << static_cast<int>(100 * estimate_.cluster_weight) << " % of the weight)";
   } else if (sxy > params_.localized_max_xy_std) {
+    s.state = State::kUncertain;
     why << "position uncertainty too large (sigma " << sxy << " m)";
   } else if (sth > params_.localized_max_theta_std) {
+    s.state = State::kUncertain;
     why << "heading uncertainty too large (sigma " << sth * 180 / M_PI << " deg)";
   } else if (inliers_ < params_.localized_min_inliers || meanFit() < params_.fit_min_mean) {
+    s.state = State::kMisfit;
     why << "scan does not fit the map at the estimate (" << static_cast<int>(100 * inliers_)
         << " % of the echoes within " << params_.inlier_tolerance << " m of an obstacle, "
         << static_cast<int>(100 * meanFit()) << " % over the last " << fit_window_.size()
         << " updates)";
   } else if (w_slow_ > 0 && w_fast_ < params_.recovery_ratio * w_slow_) {
+    s.state = State::kMisfit;
     why << "scans no longer match the map (short/long-term likelihood " << w_fast_ / w_slow_ << ")";
   }
-  s.reason = why.str();
-  s.localized = s.reason.empty();
+  s.detail = why.str();
   return s;
 }
 

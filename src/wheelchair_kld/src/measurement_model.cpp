@@ -26,23 +26,32 @@ MeasurementModel::MeasurementModel(const LocalizationMap& map, const Measurement
         params_.z_hit * gaussian(std::max(0.0, dist[i] - surface), params_.sigma_hit) + rand));
 }
 
-int MeasurementModel::setScan(const LaserScan& scan) {
+int MeasurementModel::setScan(const wheelchair_core::LaserScan2D& scan,
+                              const wheelchair_core::Pose2D& sensor_pose) {
   beams_.clear();
-  sensor_pose_ = scan.sensor_pose;
+  sensor_pose_ = mrpt::math::TPose2D(sensor_pose.x, sensor_pose.y, sensor_pose.yaw);
   const double max_range = std::min(params_.max_range, scan.range_max);
   const int step = std::max(1, params_.beam_step);
-  const double cs = std::cos(scan.sensor_pose.phi), sn = std::sin(scan.sensor_pose.phi);
+  const double cs = std::cos(sensor_pose_.phi), sn = std::sin(sensor_pose_.phi);
   for (size_t i = 0; i < scan.ranges.size(); i += step) {
     const double r = scan.ranges[i];
-    if (std::isfinite(r) && r < scan.range_min) continue;
     Beam b;
-    b.angle = scan.sensor_pose.phi + scan.angle_min + i * scan.angle_increment;
-    b.max_range = !std::isfinite(r) || r >= max_range;
+    switch (wheelchair_core::classifyBeam(scan.ranges[i], scan)) {
+      case wheelchair_core::Beam::kReturn:
+        b.max_range = r >= max_range;
+        break;
+      case wheelchair_core::Beam::kNoReturn:
+        b.max_range = true;
+        break;
+      default:  // too close, erroneous, outside [range_min, range_max]: discarded
+        continue;
+    }
+    b.angle = sensor_pose_.phi + scan.angle_min + i * scan.angle_increment;
     b.range = b.max_range ? max_range : r;
     const double lx = b.range * std::cos(scan.angle_min + i * scan.angle_increment);
     const double ly = b.range * std::sin(scan.angle_min + i * scan.angle_increment);
-    b.end_x = scan.sensor_pose.x + cs * lx - sn * ly;
-    b.end_y = scan.sensor_pose.y + sn * lx + cs * ly;
+    b.end_x = sensor_pose_.x + cs * lx - sn * ly;
+    b.end_y = sensor_pose_.y + sn * lx + cs * ly;
     beams_.push_back(b);
   }
   return beamCount();

@@ -82,7 +82,7 @@ PoseEstimate estimateDominantCluster(const std::vector<Particle>& particles, dou
     const double w = std::exp(particles[i].log_w);
     const auto& p = particles[i].d;
     const double e[3] = {p.x - est.mean.x, p.y - est.mean.y,
-                         mrpt::math::wrapToPi(p.phi - est.mean.phi)};
+                         mrpt::math::wrapToPi(p.phi - est.mean.yaw)};
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) est.cov(r, c) += w * e[r] * e[c];
     sw += w;
@@ -91,8 +91,8 @@ PoseEstimate estimateDominantCluster(const std::vector<Particle>& particles, dou
   return est;
 }
 
-mrpt::math::TPose2D clusterMean(const std::vector<Particle>& particles, const PoseEstimate& est,
-                                int c) {
+wheelchair_core::Pose2D clusterMean(const std::vector<Particle>& particles, const PoseEstimate& est,
+                                    int c) {
   double sx = 0, sy = 0, sc = 0, ss = 0, sw = 0;
   for (size_t i = 0; i < particles.size(); ++i) {
     if (est.particle_cluster[i] != c) continue;
@@ -104,8 +104,8 @@ mrpt::math::TPose2D clusterMean(const std::vector<Particle>& particles, const Po
     ss += w * std::sin(p.phi);
     sw += w;
   }
-  if (!(sw > 0)) return mrpt::math::TPose2D();
-  return mrpt::math::TPose2D(sx / sw, sy / sw, std::atan2(ss, sc));
+  if (!(sw > 0)) return wheelchair_core::Pose2D();
+  return {sx / sw, sy / sw, std::atan2(ss, sc)};
 }
 
 }  // namespace wheelchair_kld

@@ -1,36 +1,41 @@
 // rostest: feeds the localizer node a map, tf and synthetic scans of a drive in the flat world
-// (laserScanSimulator, noisy odometry) and checks /kld_pose and kld/localized against the truth.
+// (laserScanSimulator, noisy odometry) and checks /kld_pose and /localization/status against the
+// truth.
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
-#include <std_msgs/String.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_core/map_io.h>
-#include <wheelchair_kld/ros/conversions.h>
-#include <wheelchair_kld/synthetic_drive.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
 
+#include <sys/wait.h>
+
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 #include <string>
 #include <vector>
 
-using namespace wheelchair_kld;
+#include "synthetic_drive.h"
+
+using namespace wheelchair_kld::test;
+using wheelchair_ros::toPose2D;
+using wheelchair_ros::toPoseMsg;
+using Status = wheelchair_msgs::LocalizationStatus;
 
 namespace {
-geometry_msgs::TransformStamped transform(const mrpt::math::TPose2D& p, const std::string& parent,
-                                          const std::string& child, const ros::Time& stamp) {
+geometry_msgs::TransformStamped transform(const wheelchair_core::Pose2D& p,
+                                          const std::string& parent, const std::string& child,
+                                          const ros::Time& stamp) {
   geometry_msgs::TransformStamped t;
   t.header.stamp = stamp;
   t.header.frame_id = parent;
   t.child_frame_id = child;
-  const auto pose = toPoseMsg(p);
-  t.transform.translation.x = pose.position.x;
-  t.transform.translation.y = pose.position.y;
-  t.transform.rotation = pose.orientation;
+  t.transform = wheelchair_ros::toTransformMsg(p);
   return t;
 }
 }  // namespace
@@ -50,18 +55,18 @@ class KldLocalizerNode : public testing::Test {
           last_pose_ = *m;
           ++poses_;
         });
-    status_sub_ = nh_.subscribe<std_msgs::String>("kld/localized", 50,
-                                                  [this](const std_msgs::String::ConstPtr& m) {
-                                                    std::lock_guard<std::mutex> lock(mutex_);
-                                                    statuses_.push_back(m->data);
-                                                  });
+    status_sub_ =
+        nh_.subscribe<Status>("localization/status", 50, [this](const Status::ConstPtr& m) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          statuses_.push_back(*m);
+        });
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
     scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
     init_pub_ = nh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("initialpose", 1, true);
     static_tf_.sendTransform(transform(dp_.sensor_pose, "base_link", "laser", ros::Time::now()));
     map_pub_.publish(wheelchair_ros::toOccupancyGrid(map, "map", ros::Time::now()));
     // Wait for the localizer to subscribe and to have the map.
-    for (int i = 0; i < 100 && (scan_pub_.getNumSubscribers() == 0 || status().empty()); ++i)
+    for (int i = 0; i < 100 && (scan_pub_.getNumSubscribers() == 0 || statusCount() == 0); ++i)
       ros::Duration(0.05).sleep();
     ASSERT_GT(scan_pub_.getNumSubscribers(), 0u);
     geometry_msgs::PoseWithCovarianceStamped init;
@@ -75,28 +80,21 @@ class KldLocalizerNode : public testing::Test {
   }
 
   sensor_msgs::LaserScan scanMsg(size_t i, const ros::Time& stamp) const {
-    sensor_msgs::LaserScan scan;
+    sensor_msgs::LaserScan scan = wheelchair_ros::toLaserScanMsg(drive_[i].scan, "laser");
     scan.header.stamp = stamp;
-    scan.header.frame_id = "laser";
-    const auto& s = drive_[i].scan;
-    scan.angle_min = s.angle_min;
-    scan.angle_increment = s.angle_increment;
-    scan.angle_max = scan.angle_min + scan.angle_increment * (s.ranges.size() - 1);
-    scan.range_min = s.range_min;
-    scan.range_max = s.range_max;
-    scan.ranges = s.ranges;
     return scan;
   }
   /// Sends odom -> base_link of drive sample i stamped `stamp`.
   void sendOdom(size_t i, const ros::Time& stamp) {
     tf_.sendTransform(transform(drive_[i].odom, "odom", "base_link", stamp));
   }
-  std::string status() {
+  Status status() {
     std::lock_guard<std::mutex> lock(mutex_);
-    return statuses_.empty() ? "" : statuses_.back();
+    return statuses_.empty() ? Status() : statuses_.back();
   }
+  bool localized() { return status().state == Status::LOCALIZED; }
   /// Statuses received from index `from` on.
-  std::vector<std::string> statusesSince(size_t from) {
+  std::vector<Status> statusesSince(size_t from) {
     std::lock_guard<std::mutex> lock(mutex_);
     return {statuses_.begin() + std::min(from, statuses_.size()), statuses_.end()};
   }
@@ -118,7 +116,7 @@ class KldLocalizerNode : public testing::Test {
   std::vector<DriveSample> drive_;
   std::mutex mutex_;
   geometry_msgs::PoseWithCovarianceStamped last_pose_;
-  std::vector<std::string> statuses_;
+  std::vector<Status> statuses_;
   int poses_ = 0;
   ros::Subscriber pose_sub_, status_sub_;
   ros::Publisher map_pub_, scan_pub_, init_pub_;
@@ -146,7 +144,7 @@ TEST_F(KldLocalizerNode, TracksASyntheticDriveAndReportsLocalized) {
   const auto p = toPose2D(lastPose().pose.pose);
   EXPECT_LT(std::hypot(p.x - drive_[n - 1].truth.x, p.y - drive_[n - 1].truth.y), 0.1);
   EXPECT_LT(worst, 0.25);
-  EXPECT_EQ(status(), "localized");
+  EXPECT_TRUE(localized()) << status().detail;
 }
 
 // Odometry that lags the laser by 30 ms (each scan is published before the odom -> base_link
@@ -164,21 +162,42 @@ TEST_F(KldLocalizerNode, ToleratesOdometryLagButReportsATfOutage) {
   };
   sendOdom(0, ros::Time::now());
   for (; i < 15;) step(true);  // first updates after the initial pose
-  ASSERT_EQ(status(), "localized");
+  ASSERT_TRUE(localized()) << status().detail;
   const size_t lag_from = statusCount();
   for (; i < 45;) step(i != 30);  // scan 30's odometry never comes: it waits 130 ms for scan 31's
   const auto during_lag = statusesSince(lag_from);
   EXPECT_GE(during_lag.size(), 25u) << "scans with lagging odometry were not used";
-  for (const auto& s : during_lag) EXPECT_EQ(s, "localized") << "flipped by a 30 ms odom lag";
+  for (const auto& s : during_lag)
+    EXPECT_EQ(s.state, Status::LOCALIZED) << "flipped by a 30 ms odom lag: " << s.detail;
 
   const size_t outage_from = statusCount();
   for (const size_t end = i + 10; i < end;) step(false);  // 1 s without odometry
   bool reported = false;
-  for (const auto& s : statusesSince(outage_from)) reported |= s.rfind("tf missing", 0) == 0;
-  EXPECT_TRUE(reported) << "a 1 s tf outage was not reported; last status: " << status();
+  for (const auto& s : statusesSince(outage_from))
+    reported |= s.state == Status::NO_DATA && s.detail.rfind("tf missing", 0) == 0;
+  EXPECT_TRUE(reported) << "a 1 s tf outage was not reported; last status: " << status().detail;
 
   for (const size_t end = i + 10; i < end;) step(true);
-  EXPECT_EQ(status(), "localized") << "no recovery after the tf outage";
+  EXPECT_TRUE(localized()) << "no recovery after the tf outage: " << status().detail;
+}
+
+// The nodelet's one loader refuses an old or misspelt parameter: `rosrun` exits 1 naming it.
+TEST(KldLocalizerParams, AnOldOrUnknownParameterRefusesTheNode) {
+  auto run = [](const std::string& args, std::string& output) {
+    FILE* pipe = popen(
+        ("rosrun wheelchair_kld kld_localizer __name:=refused " + args + " 2>&1").c_str(), "r");
+    char buf[512];
+    while (pipe && fgets(buf, sizeof buf, pipe)) output += buf;
+    const int status = pipe ? pclose(pipe) : -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  std::string old_name, misspelt;
+  EXPECT_EQ(run("_global_frame:=map", old_name), 1) << old_name;
+  EXPECT_NE(old_name.find("'global_frame' is now called 'map_frame'"), std::string::npos)
+      << old_name;
+  ros::param::del("/refused");
+  EXPECT_EQ(run("_fit_mean:=0.5", misspelt), 1) << misspelt;
+  EXPECT_NE(misspelt.find("unknown parameter 'fit_mean'"), std::string::npos) << misspelt;
 }
 
 int main(int argc, char** argv) {

@@ -1,13 +1,16 @@
 // Distance transform against brute force; both measurement models prefer the true pose.
 #include <gtest/gtest.h>
 #include <wheelchair_kld/measurement_model.h>
-#include <wheelchair_kld/synthetic_drive.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 
 #include <cmath>
 
+#include "synthetic_drive.h"
+
 using mrpt::math::TPose2D;
 using namespace wheelchair_kld;
+using wheelchair_kld::test::DriveParams;
+using wheelchair_kld::test::loadWorldGrid;
 
 namespace {
 wheelchair_core::OccupancyMap freeGrid(double resolution, int width, int height) {
@@ -66,7 +69,9 @@ TEST_P(MeasurementModelTest, TruePoseIsMoreLikelyThanOffsetPoses) {
   p.type = GetParam();
   MeasurementModel model(map, p);
   const TPose2D truth(5.0, 11.0, 0.2);
-  model.setScan(simulateScan(grid, truth, DriveParams(), 11));
+  const DriveParams drive;
+  model.setScan(test::simulateScan(grid, {truth.x, truth.y, truth.phi}, drive, 11),
+                drive.sensor_pose);
   EXPECT_EQ(model.beamCount(), 61);
   const double at_truth = model.logLikelihood(truth);
   for (const TPose2D off : {TPose2D(5.15, 11.0, 0.2), TPose2D(5.0, 10.85, 0.2),

@@ -27,11 +27,8 @@ Grid::cellType toCellLogOdds(double p) {
 }  // namespace
 
 BayesMapper::BayesMapper(const MapperConfig& config) : config_(config) {
-  const std::string problem = config.model.problem();
+  const std::string problem = config.validate();
   if (!problem.empty()) throw std::invalid_argument("mapper: " + problem);
-  if (!(config.resolution > 0) || !(config.initial_size > 0) || !(config.growth_margin >= 0)) {
-    throw std::invalid_argument("mapper: resolution, initial_size must be positive");
-  }
   const auto half = static_cast<float>(config.initial_size / 2);
   grid_.setSize(-half, half, -half, half, static_cast<float>(config.resolution), 0.5f);
   // MRPT cells hold log-odds of being free: an occupied reading subtracts, a free one adds.
@@ -95,7 +92,8 @@ InsertResult BayesMapper::insert(const wheelchair_core::LaserScan2D& scan,
     result.reason = "sensor pose is not finite";
     return result;
   }
-  result.reason = wheelchair_core::scanGeometryProblem(scan, config_.expected_beams);
+  result.reason =
+      wheelchair_core::scanGeometryProblem(scan, static_cast<size_t>(config_.expected_beams));
   if (!result.reason.empty()) return result;
   if (scan.stamp < last_stamp_) {
     std::ostringstream msg;

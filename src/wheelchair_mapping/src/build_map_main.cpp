@@ -4,12 +4,12 @@
 // map.pgm and a PNG preview.
 #include <sys/resource.h>
 #include <wheelchair_core/map_io.h>
-#include <wheelchair_mapping/bag_scans.h>
+#include <wheelchair_logs/bag_scans.h>
+#include <wheelchair_logs/carmen_log.h>
+#include <wheelchair_logs/map_preview.h>
+#include <wheelchair_logs/progress_bar.h>
 #include <wheelchair_mapping/bayes_mapper.h>
-#include <wheelchair_mapping/carmen_log.h>
 #include <wheelchair_mapping/map_consistency.h>
-#include <wheelchair_mapping/map_preview.h>
-#include <wheelchair_mapping/progress_bar.h>
 
 #include <chrono>
 #include <cstdio>
@@ -21,6 +21,12 @@
 
 namespace wheelchair_mapping {
 namespace {
+
+using wheelchair_logs::BagScanReader;
+using wheelchair_logs::CarmenLogReader;
+using wheelchair_logs::LogScan;
+using wheelchair_logs::ProgressBar;
+using wheelchair_logs::savePreviewPng;
 
 const char* kUsage =
     "usage: build_map --log FILE --out MAP.yaml [--resolution M] [--max-range M]\n"

@@ -1,3 +1,4 @@
+#include <wheelchair_core/config.h>
 #include <wheelchair_mapping/inverse_sensor_model.h>
 
 #include <cmath>
@@ -10,15 +11,14 @@ double elfesUpdate(double p_sensor, double p_prior) {
   return occupied / (occupied + (1.0 - p_sensor) * (1.0 - p_prior));
 }
 
-std::string InverseSensorModel::problem() const {
-  if (!(p_occ_hit > 0.5 && p_occ_hit < 1.0)) return "p_occ_hit must be in (0.5, 1)";
-  if (!(p_occ_pass > 0.0 && p_occ_pass < 0.5)) return "p_occ_pass must be in (0, 0.5)";
-  if (!(max_insertion_range > 0.0) || !std::isfinite(max_insertion_range)) {
-    return "max_insertion_range must be positive and finite";
-  }
-  if (!std::isfinite(no_return_range)) return "no_return_range must be finite";
-  if (!(beam_width >= 0.0 && beam_width < 0.5)) return "beam_width must be in [0, 0.5) rad";
-  return "";
+std::string InverseSensorModel::validate() const {
+  return wheelchair_core::ConfigChecks()
+      .check(p_occ_hit > 0.5 && p_occ_hit < 1.0, "p_occ_hit must be in (0.5, 1)")
+      .check(p_occ_pass > 0.0 && p_occ_pass < 0.5, "p_occ_pass must be in (0, 0.5)")
+      .positive("max_insertion_range", max_insertion_range)
+      .finite("no_return_range", no_return_range)
+      .check(beam_width >= 0.0 && beam_width < 0.5, "beam_width must be in [0, 0.5) rad")
+      .result();
 }
 
 }  // namespace wheelchair_mapping

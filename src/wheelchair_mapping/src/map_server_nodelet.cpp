@@ -1,11 +1,15 @@
 // Publishes a map file as a latched nav_msgs/OccupancyGrid on /map (+ /map_metadata, and the
-// static_map service), like ROS map_server. Map file: first nodelet argument or ~map_file.
+// static_map service), like ROS map_server. Map file: first nodelet argument or ~map_file;
+// frame: ~map_frame (map).
 #include <nav_msgs/GetMap.h>
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/parameters.h>
 #include <pluginlib/class_list_macros.hpp>
+
+#include "mapping_node_config.h"
 
 namespace wheelchair_mapping {
 
@@ -13,17 +17,15 @@ class MapServerNodelet : public nodelet::Nodelet {
  private:
   void onInit() override {
     ros::NodeHandle& nh = getNodeHandle();
-    ros::NodeHandle& pnh = getPrivateNodeHandle();
-    std::string path;
-    if (!getMyArgv().empty()) {
-      path = getMyArgv().front();
-    } else if (!pnh.getParam("map_file", path)) {
+    const auto config = wheelchair_ros::loadParameters<MapServerConfig>(getPrivateNodeHandle(),
+                                                                        readMapServerConfig);
+    const std::string path = getMyArgv().empty() ? config.map_file : getMyArgv().front();
+    if (path.empty()) {
       NODELET_FATAL("no map file: give it as the first argument or as ~map_file");
       return;
     }
-    const std::string frame_id = pnh.param<std::string>("frame_id", "map");
     try {
-      map_ = wheelchair_ros::toOccupancyGrid(wheelchair_core::loadMap(path), frame_id,
+      map_ = wheelchair_ros::toOccupancyGrid(wheelchair_core::loadMap(path), config.map_frame,
                                              ros::Time::now());
     } catch (const wheelchair_core::MapFileError& e) {
       NODELET_FATAL("%s", e.what());  // publish nothing: a wrong map is worse than none

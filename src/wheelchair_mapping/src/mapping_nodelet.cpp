@@ -1,5 +1,5 @@
 // The paper's map making as a node: fuses /scan at the laser pose taken from tf2 (in the
-// frame ~pose_frame: odom, the simulator's ground truth or the localizer's map) into the
+// frame ~map_frame: odom, the simulator's ground truth or the localizer's map) into the
 // Bayesian grid, publishes it on /map every ~publish_period s and on request (dynamic_map),
 // and saves it as YAML + PGM with ~save_map (to ~save_path).
 #include <nav_msgs/GetMap.h>
@@ -12,10 +12,13 @@
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_mapping/bayes_mapper.h>
 #include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/parameters.h>
 #include <pluginlib/class_list_macros.hpp>
 
 #include <memory>
 #include <mutex>
+
+#include "mapping_node_config.h"
 
 namespace wheelchair_mapping {
 
@@ -24,45 +27,26 @@ class MappingNodelet : public nodelet::Nodelet {
   void onInit() override {
     ros::NodeHandle& nh = getNodeHandle();
     ros::NodeHandle& pnh = getPrivateNodeHandle();
-    pose_frame_ = pnh.param<std::string>("pose_frame", "odom");
-    tf_timeout_ = pnh.param("tf_timeout", 0.2);
-    MapperConfig config;
-    pnh.param("resolution", config.resolution, config.resolution);
-    pnh.param("initial_size", config.initial_size, config.initial_size);
-    int expected_beams = 0;
-    pnh.param("expected_beams", expected_beams, 0);
-    config.expected_beams = static_cast<size_t>(std::max(0, expected_beams));
-    InverseSensorModel& m = config.model;
-    pnh.param("p_occ_hit", m.p_occ_hit, m.p_occ_hit);
-    pnh.param("p_occ_pass", m.p_occ_pass, m.p_occ_pass);
-    pnh.param("max_insertion_range", m.max_insertion_range, m.max_insertion_range);
-    pnh.param("no_return_is_free", m.no_return_is_free, m.no_return_is_free);
-    pnh.param("no_return_range", m.no_return_range, m.no_return_range);
-    pnh.param("beam_width", m.beam_width, m.beam_width);
-    try {
-      mapper_ = std::make_unique<BayesMapper>(config);
-    } catch (const std::invalid_argument& e) {
-      NODELET_FATAL("%s: not mapping", e.what());
-      return;
-    }
+    config_ = wheelchair_ros::loadParameters<MappingNodeConfig>(pnh, readMappingNodeConfig);
+    mapper_ = std::make_unique<BayesMapper>(config_.mapper);  // a valid config: no throw
     tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_, nh);
     map_pub_ = nh.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
     scan_sub_ = nh.subscribe("scan", 10, &MappingNodelet::onScan, this);
     save_srv_ = pnh.advertiseService("save_map", &MappingNodelet::onSave, this);
     get_srv_ = nh.advertiseService("dynamic_map", &MappingNodelet::onGetMap, this);
-    timer_ = nh.createWallTimer(ros::WallDuration(pnh.param("publish_period", 2.0)),
+    timer_ = nh.createWallTimer(ros::WallDuration(config_.publish_period),
                                 [this](const ros::WallTimerEvent&) { publish(); });
   }
 
-  /// Laser pose in pose_frame_ at the scan's time; false (with a reason) if unknown.
+  /// Laser pose in the map frame at the scan's time; false (with a reason) if unknown.
   bool laserPose(const sensor_msgs::LaserScan& msg, wheelchair_core::Pose2D& pose,
                  bool& upside_down, std::string& reason) {
     geometry_msgs::TransformStamped t;
     try {
-      t = tf_buffer_.lookupTransform(pose_frame_, msg.header.frame_id, msg.header.stamp,
-                                     ros::Duration(tf_timeout_));
+      t = tf_buffer_.lookupTransform(config_.map_frame, msg.header.frame_id, msg.header.stamp,
+                                     ros::Duration(config_.tf_timeout));
     } catch (const tf2::TransformException& e) {
-      reason = std::string("no tf ") + pose_frame_ + " -> " + msg.header.frame_id + ": " + e.what();
+      reason = "no tf " + config_.map_frame + " -> " + msg.header.frame_id + ": " + e.what();
       return false;
     }
     upside_down = wheelchair_ros::laserPose2D(t.transform, pose);
@@ -91,7 +75,7 @@ class MappingNodelet : public nodelet::Nodelet {
   nav_msgs::OccupancyGrid currentMap() {
     std::lock_guard<std::mutex> lock(mutex_);
     changed_ = false;
-    return wheelchair_ros::toOccupancyGrid(mapper_->map(), pose_frame_, ros::Time::now());
+    return wheelchair_ros::toOccupancyGrid(mapper_->map(), config_.map_frame, ros::Time::now());
   }
 
   void publish() {
@@ -105,7 +89,8 @@ class MappingNodelet : public nodelet::Nodelet {
   }
 
   bool onSave(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
-    const std::string path = getPrivateNodeHandle().param<std::string>("save_path", "map.yaml");
+    const std::string path =
+        getPrivateNodeHandle().param<std::string>("save_path", config_.save_path);
     try {
       wheelchair_core::OccupancyMap map;
       {
@@ -123,8 +108,7 @@ class MappingNodelet : public nodelet::Nodelet {
     return true;
   }
 
-  std::string pose_frame_;
-  double tf_timeout_ = 0.2;
+  MappingNodeConfig config_;
   std::unique_ptr<BayesMapper> mapper_;
   std::mutex mutex_;
   bool changed_ = false;

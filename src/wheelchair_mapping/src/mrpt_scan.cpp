@@ -8,7 +8,7 @@ wheelchair_core::LaserScan2D laserScanFromMrpt(const mrpt::obs::CObservation2DRa
                                                double stamp) {
   wheelchair_core::LaserScan2D out;
   const size_t n = scan.getScanSize();
-  const double step = n > 1 ? scan.aperture / (n - 1) : 0.0;
+  const double step = n > 1 ? static_cast<double>(scan.aperture) / (n - 1) : 0.0;
   out.stamp = stamp;
   out.angle_increment = scan.rightToLeft ? step : -step;
   out.angle_min = scan.rightToLeft ? -scan.aperture / 2 : scan.aperture / 2;

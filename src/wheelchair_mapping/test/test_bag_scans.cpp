@@ -4,7 +4,7 @@
 #include <rosbag/bag.h>
 #include <sensor_msgs/LaserScan.h>
 #include <tf2_msgs/TFMessage.h>
-#include <wheelchair_mapping/bag_scans.h>
+#include <wheelchair_logs/bag_scans.h>
 #include <wheelchair_mapping/bayes_mapper.h>
 
 #include <cmath>
@@ -13,6 +13,9 @@
 
 namespace wheelchair_mapping {
 namespace {
+
+using wheelchair_logs::BagScanReader;
+using wheelchair_logs::LogScan;
 
 geometry_msgs::TransformStamped transform(const std::string& parent, const std::string& child,
                                           double t, double x, double yaw) {

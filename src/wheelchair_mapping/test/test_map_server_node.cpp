@@ -26,6 +26,16 @@ typename Msg::ConstPtr waitFor(const std::string& topic, double seconds) {
   return received;
 }
 
+/// Runs `command` (stderr with stdout into `output`); its exit code, -1 if it did not exit.
+int run(const std::string& command, std::string& output) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return -1;
+  char buf[512];
+  while (fgets(buf, sizeof buf, pipe)) output += buf;
+  const int status = pclose(pipe);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 TEST(MapServerNode, PublishesTheLatchedMapOfTheFile) {
   wheelchair_core::test::TempDir dir;
   // 4 x 3 image, top row first: occupied border on the top row, one unknown pixel.
@@ -57,19 +67,28 @@ TEST(MapServerNode, PublishesTheLatchedMapOfTheFile) {
 TEST(MapServerNode, BadMapFileParameterExitsWithOneFatalLine) {
   wheelchair_core::test::TempDir dir;
   const std::string missing = dir.file("missing.yaml");
-  FILE* pipe =
-      popen(("rosrun wheelchair_mapping map_server __name:=bad_map_server _map_file:=" + missing +
-             " 2>&1")
-                .c_str(),
-            "r");
-  ASSERT_NE(pipe, nullptr);
   std::string output;
-  char buf[512];
-  while (fgets(buf, sizeof buf, pipe)) output += buf;
-  const int status = pclose(pipe);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << output;
+  EXPECT_EQ(run("rosrun wheelchair_mapping map_server __name:=bad_map_server _map_file:=" + missing,
+                output),
+            1)
+      << output;
   EXPECT_NE(output.find("FATAL"), std::string::npos) << output;
   EXPECT_NE(output.find(missing + ": map file not found"), std::string::npos) << output;
+}
+
+// The old name of the frame parameter refuses the node, naming the new one.
+TEST(MapServerNode, TheOldFrameParameterNameExitsNamingTheNewOne) {
+  wheelchair_core::test::TempDir dir;
+  wheelchair_core::test::writePgm(dir.file("tiny.pgm"), 1, 1, {254});
+  wheelchair_core::test::writeText(dir.file("tiny.yaml"),
+                                   wheelchair_core::test::mapYaml("tiny.pgm", "0.1"));
+  std::string output;
+  EXPECT_EQ(run("rosrun wheelchair_mapping map_server __name:=old_frame_map_server " +
+                    dir.file("tiny.yaml") + " _frame_id:=map",
+                output),
+            1)
+      << output;
+  EXPECT_NE(output.find("'frame_id' is now called 'map_frame'"), std::string::npos) << output;
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 // poses of the Intel lab log, every 10th scan held back; the held-back scans' endpoints must
 // land on (or next to) occupied cells.
 #include <gtest/gtest.h>
+#include <wheelchair_logs/carmen_log.h>
 #include <wheelchair_mapping/bayes_mapper.h>
-#include <wheelchair_mapping/carmen_log.h>
 #include <wheelchair_mapping/map_consistency.h>
 
 #include <filesystem>
@@ -11,6 +11,9 @@
 
 namespace wheelchair_mapping {
 namespace {
+
+using wheelchair_logs::CarmenLogReader;
+using wheelchair_logs::LogScan;
 
 TEST(RealLogConsistency, IntelCorrectedHeldOutScans) {
   const std::string log = std::string(WHEELCHAIR_SHARED_DATA_DIR) + "/intel/intel-corrected.log.gz";

@@ -68,6 +68,24 @@ boost::array<double, 36> toRosCovariance(const Eigen::Matrix3d& planar) {
   return cov;
 }
 
+geometry_msgs::PoseWithCovariance toPoseWithCovarianceMsg(const Pose2D& pose,
+                                                          const Eigen::Matrix3d& covariance) {
+  geometry_msgs::PoseWithCovariance p;
+  p.pose = toPoseMsg(pose);
+  p.covariance = toRosCovariance(covariance);
+  return p;
+}
+
+geometry_msgs::PoseArray toPoseArrayMsg(const std::vector<Pose2D>& poses,
+                                        const std::string& frame_id, const ros::Time& stamp) {
+  geometry_msgs::PoseArray a;
+  a.header.frame_id = frame_id;
+  a.header.stamp = stamp;
+  a.poses.reserve(poses.size());
+  for (const Pose2D& p : poses) a.poses.push_back(toPoseMsg(p));
+  return a;
+}
+
 LaserScan2D fromLaserScanMsg(const sensor_msgs::LaserScan& msg) {
   LaserScan2D scan;
   scan.stamp = msg.header.stamp.toSec();
@@ -149,6 +167,48 @@ OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg,
   map.origin_yaw = yawOf(o.orientation);
   map.data = msg.data;
   return map;
+}
+
+wheelchair_msgs::LocalizationStatus toLocalizationStatusMsg(
+    const wheelchair_core::LocalizationStatus& status, const ros::Time& stamp) {
+  using State = wheelchair_core::LocalizationState;
+  using Msg = wheelchair_msgs::LocalizationStatus;
+  Msg m;
+  m.header.stamp = stamp;
+  switch (status.state) {
+    case State::kUninitialized:
+      m.state = Msg::UNINITIALIZED;
+      break;
+    case State::kLocalizing:
+      m.state = Msg::LOCALIZING;
+      break;
+    case State::kLocalized:
+      m.state = Msg::LOCALIZED;
+      break;
+    case State::kAmbiguous:
+      m.state = Msg::AMBIGUOUS;
+      break;
+    case State::kUncertain:
+      m.state = Msg::UNCERTAIN;
+      break;
+    case State::kMisfit:
+      m.state = Msg::MISFIT;
+      break;
+    case State::kNoData:
+      m.state = Msg::NO_DATA;
+      break;
+  }
+  m.localized = status.localized();
+  m.sentence = wheelchair_core::riderSentence(status.state);
+  m.detail = status.detail;
+  m.position_std = status.position_std;
+  m.heading_std = status.heading_std;
+  m.inlier_fraction = status.inlier_fraction;
+  m.mean_fit = status.mean_fit;
+  m.hypotheses = status.hypotheses;
+  m.best_weight = status.best_weight;
+  m.particles = status.particles;
+  return m;
 }
 
 nav_msgs::Path toPathMsg(const std::vector<Pose2D>& poses, const std::string& frame_id,

@@ -2,6 +2,8 @@
 #include <wheelchair_ros/conversions.h>
 
 #include <cmath>
+#include <set>
+#include <string>
 
 namespace wheelchair_ros {
 namespace {
@@ -125,6 +127,49 @@ TEST(RosConversions, PlanarCovarianceIsTheXYYawBlock) {
   EXPECT_EQ(ros_cov[35], 9);  // yaw-yaw
   EXPECT_EQ(ros_cov[14], 0);  // z-z
   EXPECT_EQ(planarCovariance(ros_cov), c);
+}
+
+TEST(RosConversions, AnEstimateAndACloudKeepTheirPosesAndCovariance) {
+  Eigen::Matrix3d c;
+  c << 0.04, 0.01, 0, 0.01, 0.09, 0, 0, 0, 0.0025;
+  const auto estimate = toPoseWithCovarianceMsg({1.0, -2.0, 0.3}, c);
+  EXPECT_EQ(toPose2D(estimate.pose).x, 1.0);
+  EXPECT_NEAR(toPose2D(estimate.pose).yaw, 0.3, 1e-12);
+  EXPECT_EQ(planarCovariance(estimate.covariance), c);
+  const auto cloud = toPoseArrayMsg({{1, 2, 0.5}, {3, -4, -2.0}}, "map", ros::Time(2.0));
+  ASSERT_EQ(cloud.poses.size(), 2u);
+  EXPECT_EQ(cloud.header.frame_id, "map");
+  EXPECT_EQ(cloud.header.stamp, ros::Time(2.0));
+  EXPECT_NEAR(toPose2D(cloud.poses[1]).yaw, -2.0, 1e-12);
+}
+
+TEST(RosConversions, ALocalizationStatusKeepsItsStateNumbersAndReason) {
+  wheelchair_core::LocalizationStatus status;
+  status.state = wheelchair_core::LocalizationState::kAmbiguous;
+  status.detail = "ambiguous: 2 pose hypotheses (best holds 60 % of the weight)";
+  status.hypotheses = 2;
+  status.best_weight = 0.6;
+  status.particles = 1234;
+  const auto m = toLocalizationStatusMsg(status, ros::Time(5.0));
+  EXPECT_EQ(m.state, wheelchair_msgs::LocalizationStatus::AMBIGUOUS);
+  EXPECT_FALSE(m.localized);
+  EXPECT_EQ(m.detail, status.detail);
+  EXPECT_FALSE(m.sentence.empty());
+  EXPECT_EQ(m.sentence.find("hypotheses"), std::string::npos) << "no technical words for the rider";
+  EXPECT_EQ(m.hypotheses, 2);
+  EXPECT_EQ(m.particles, 1234);
+  EXPECT_TRUE(std::isnan(m.position_std));
+  EXPECT_EQ(m.header.stamp, ros::Time(5.0));
+  status.state = wheelchair_core::LocalizationState::kLocalized;
+  const auto ok = toLocalizationStatusMsg(status, ros::Time(6.0));
+  EXPECT_EQ(ok.state, wheelchair_msgs::LocalizationStatus::LOCALIZED);
+  EXPECT_TRUE(ok.localized);
+  // Every state has its own sentence.
+  std::set<std::string> sentences;
+  for (int s = 0; s <= static_cast<int>(wheelchair_core::LocalizationState::kNoData); ++s)
+    sentences.insert(
+        wheelchair_core::riderSentence(static_cast<wheelchair_core::LocalizationState>(s)));
+  EXPECT_EQ(sentences.size(), 7u);
 }
 
 TEST(RosConversions, AnUpsideDownLaserIsRecognized) {

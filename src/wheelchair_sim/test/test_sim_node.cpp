@@ -2,7 +2,7 @@
 // x in [-2, 8], y in [-3, 3]), chair starting at the origin facing +x, ideal dynamics.
 #include <wheelchair_sim/SetPose.h>
 
-#include "ros_wait.h"
+#include <wheelchair_sim_testing/ros_wait.h>
 
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>

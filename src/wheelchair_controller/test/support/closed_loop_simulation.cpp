@@ -1,5 +1,6 @@
 #include <wheelchair_controller_test/closed_loop_simulation.h>
 #include <wheelchair_controller_test/wheel_speed_estimator.h>
+#include <wheelchair_sim/simulator.h>
 
 #include <chrono>
 #include <cmath>
@@ -41,9 +42,19 @@ ClosedLoopResult simulateClosedLoop(const std::vector<Pose2D>& path, const Pose2
   WheelSpeedEstimator wheels;
 
   const ChairParams& chair = plant.chair;
-  wd::State x = wd::stateAtAxlePose(start.x, start.y, start.yaw, chair);
-  const double dt_phys = 1.0 / plant.physics_rate, dt_ctrl = 1.0 / plant.control_rate;
-  const int substeps = static_cast<int>(std::round(plant.physics_rate / plant.control_rate));
+  // The real chair is the simulator's (wheelchair_sim: eq. 15 by RK4, rolling resistance, the
+  // parking brake), without a world to collide with.
+  wheelchair_sim::SimParams sim_params;
+  sim_params.physics_rate = plant.physics_rate;
+  sim_params.rolling_resistance = plant.rolling_resistance;
+  // The same smoothing of the resistance's sign as the controller's model of it
+  // (rollingResistanceTorque: 2 cm/s of rim speed), so that a plant with the model's parameters
+  // is the model; a mismatch is what PlantConfig::chair says.
+  sim_params.resistance_smoothing = 0.02 / chair.wheel_radius;
+  wheelchair_sim::Simulator chair_sim(chair, sim_params, nullptr);
+  chair_sim.setState(wd::stateAtAxlePose(start.x, start.y, start.yaw, chair));
+  const wd::State* state = &chair_sim.state();
+  const double dt_ctrl = 1.0 / plant.control_rate;
   const int noise_period =
       std::max(1, static_cast<int>(std::round(plant.control_rate / plant.pose_noise_rate)));
   Eigen::Vector3d pose_error = Eigen::Vector3d::Zero();
@@ -53,10 +64,11 @@ ClosedLoopResult simulateClosedLoop(const std::vector<Pose2D>& path, const Pose2
   double err2_sum = 0.0, dev2_sum = 0.0, travelled = 0.0;
   int active_steps = 0;
   tracker.setPath(path);
-  wheels.update(-dt_ctrl, quantize(x.segment<2>(wd::kPsiR), plant.encoder_ticks_per_rev));
+  wheels.update(-dt_ctrl, quantize(state->segment<2>(wd::kPsiR), plant.encoder_ticks_per_rev));
 
   for (int k = 0; k * dt_ctrl < plant.max_time; ++k) {
     const double t = k * dt_ctrl;
+    const wd::State& x = *state;
     const Eigen::Vector3d truth = wd::axlePose(x, chair);
     if (k % noise_period == 0) {
       pose_error = {plant.pose_noise_xy * noise(rng), plant.pose_noise_xy * noise(rng),
@@ -112,21 +124,16 @@ ClosedLoopResult simulateClosedLoop(const std::vector<Pose2D>& path, const Pose2
       res.duration = t;
       break;
     }
-    // The plant: brake holds the wheels; otherwise torques minus rolling resistance, RK4.
-    for (int i = 0; i < substeps; ++i) {
-      if (out.command.brake) {
-        x.tail<2>().setZero();
-        break;
-      }
-      Eigen::Vector2d tau = out.command.torque;
-      if (plant.rolling_resistance) tau -= rollingResistanceTorque(x.tail<2>(), chair);
-      const wd::State before = x;
-      x = wd::integrateRK4(x, tau, dt_phys, chair);
-      travelled += (wd::axlePose(x, chair) - wd::axlePose(before, chair)).head<2>().norm();
-    }
-    res.max_speed = std::max(res.max_speed, std::abs(wd::bodyVelocity(x.tail<2>(), chair)(0)));
+    // The plant, for one control period: the command held (zero-order hold) while the
+    // simulator integrates; torques [right, left], the brake engages the parking brakes.
+    const Eigen::Vector3d before = truth;
+    chair_sim.applyWheelTorques(out.command.torque(0), out.command.torque(1), out.command.brake);
+    chair_sim.step(dt_ctrl);
+    travelled += (wd::axlePose(*state, chair) - before).head<2>().norm();
+    res.max_speed = std::max(res.max_speed, std::abs(wd::bodyVelocity(state->tail<2>(), chair)(0)));
     res.duration = t;
   }
+  const wd::State& x = *state;
   res.final_state = tracker.state();
   res.reason = tracker.reason();
   res.mse_cm2 = active_steps ? 1e4 * err2_sum / active_steps : 0.0;

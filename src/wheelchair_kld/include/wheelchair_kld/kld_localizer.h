@@ -2,14 +2,17 @@
 // listing's defects fixed), with augmented-MCL recovery and a fixed-size MCL mode.
 #pragma once
 
-#include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
+#include <wheelchair_core/laser_scan.h>
+#include <wheelchair_core/localization_status.h>
+#include <wheelchair_core/pose2d.h>
 #include <wheelchair_kld/kld_params.h>
-#include <wheelchair_kld/laser_scan.h>
 #include <wheelchair_kld/localization_map.h>
 #include <wheelchair_kld/measurement_model.h>
 #include <wheelchair_kld/pose_estimate.h>
+
+#include <Eigen/Core>
 
 #include <cstdint>
 #include <deque>
@@ -29,19 +32,24 @@ class KldLocalizer {
 
   /// Global localization: max_particles poses uniform over the known-free space.
   void initGlobal();
-  /// Particles drawn from N(mean, cov) (x, y, theta); keeps the odometry reference.
-  void initGaussian(const mrpt::math::TPose2D& mean, const mrpt::math::CMatrixDouble33& cov);
+  /// Particles drawn from N(mean, cov) (x, y, yaw of base_link in the map frame).
+  void initGaussian(const wheelchair_core::Pose2D& mean, const Eigen::Matrix3d& cov);
   bool initialized() const { return !particles_.empty(); }
 
-  /// One filter step for a scan taken when base_link was at `odom` in the odom frame. Runs only
-  /// after update_min_d / update_min_a of travel since the last step (or right after an
-  /// initialization, or when `force`). A rejected scan leaves the filter untouched and its
-  /// reason in lastRejection().
-  UpdateResult update(const mrpt::math::TPose2D& odom, const LaserScan& scan, bool force = false);
+  /// One filter step for a scan taken when base_link was at `odom` in the odom frame, by a
+  /// laser at `sensor_pose` in base_link. Runs only after update_min_d / update_min_a of travel
+  /// since the last step (or right after an initialization, or when `force`). A rejected scan
+  /// leaves the filter untouched and its reason in lastRejection().
+  UpdateResult update(const wheelchair_core::Pose2D& odom, const wheelchair_core::LaserScan2D& scan,
+                      const wheelchair_core::Pose2D& sensor_pose, bool force = false);
 
-  const std::vector<Particle>& particles() const { return particles_; }
+  size_t particleCount() const { return particles_.size(); }
+  /// Every particle's pose (base_link in the map frame).
+  std::vector<wheelchair_core::Pose2D> particlePoses() const;
   const PoseEstimate& estimate() const { return estimate_; }
-  LocalizationStatus status() const;
+  /// Whether the estimate can be trusted: the state, the numbers behind it and, when not
+  /// localized, the reason with its numbers.
+  wheelchair_core::LocalizationStatus status() const;
   const std::string& lastRejection() const { return last_rejection_; }
   /// Number of beams the scan must have (0: any); set from the first scan otherwise.
   void setExpectedBeams(int n) { expected_beams_ = n; }

@@ -1,7 +1,11 @@
-// Every tunable of the localizer, with defaults that work on the project's worlds.
+// Every tunable of the localizer, with defaults that work on the project's worlds, its checks
+// and the one list of its parameter names (the nodelet and offline tools read the same keys).
 #pragma once
 
+#include <wheelchair_core/config.h>
+
 #include <cstdint>
+#include <string>
 
 namespace wheelchair_kld {
 
@@ -14,6 +18,8 @@ struct MotionNoise {
   /// Standard deviation floor added at every update (keeps duplicates apart at standstill).
   double min_xy_std = 0.005;      ///< [m]
   double min_theta_std = 0.0035;  ///< [rad]
+
+  std::string validate() const;
 };
 
 enum class MeasurementModelType { kLikelihoodField, kBeam };
@@ -31,9 +37,14 @@ struct MeasurementParams {
   double max_distance = 2.0;  ///< [m] likelihood-field distance cap
   /// Exponent applied to the log-likelihood (beams are not independent; < 1 tempers).
   double likelihood_exponent = 0.1;
+
+  std::string validate() const;
 };
 
 struct KldParams {
+  /// A scan with fewer returns than this share of its beams is rejected.
+  double min_echo_fraction = 0.2;
+
   // KLD-sampling (Fox 2003).
   double epsilon = 0.05;  ///< K-L error bound
   double delta = 0.01;    ///< 1 - confidence
@@ -98,6 +109,15 @@ struct KldParams {
 
   MotionNoise motion;
   MeasurementParams measurement;
+
+  /// "" if usable, else every problem (ConfigChecks), the nested structs' included.
+  std::string validate() const;
 };
+
+/// Every key of KldParams, as the nodelet's private parameters name them (kld_epsilon,
+/// bin_xy, ..., recovery_alpha_slow, fit_min_mean, odom_alpha1..4, laser_model_type
+/// likelihood_field | beam, laser_*). Throws wheelchair_core::ConfigError for an unknown
+/// laser_model_type.
+void readKldParams(wheelchair_core::ConfigReader& reader, KldParams& params);
 
 }  // namespace wheelchair_kld

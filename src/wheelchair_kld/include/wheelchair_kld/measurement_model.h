@@ -3,8 +3,9 @@
 #pragma once
 
 #include <mrpt/math/TPose2D.h>
+#include <wheelchair_core/laser_scan.h>
+#include <wheelchair_core/pose2d.h>
 #include <wheelchair_kld/kld_params.h>
-#include <wheelchair_kld/laser_scan.h>
 #include <wheelchair_kld/localization_map.h>
 
 #include <vector>
@@ -15,9 +16,11 @@ class MeasurementModel {
  public:
   MeasurementModel(const LocalizationMap& map, const MeasurementParams& params);
 
-  /// Selects every beam_step-th beam of a validated scan and precomputes it in base_link.
-  /// Returns the number of beams used.
-  int setScan(const LaserScan& scan);
+  /// Selects every beam_step-th beam of a validated scan taken by a laser at `sensor_pose` in
+  /// base_link and precomputes it there. Returns (REP-117) the returns, as echoes up to
+  /// min(max_range, range_max) and beyond it as carrying no information, and the no-return
+  /// beams; readings to be discarded are left out. Returns the number of beams used.
+  int setScan(const wheelchair_core::LaserScan2D& scan, const wheelchair_core::Pose2D& sensor_pose);
   int beamCount() const { return static_cast<int>(beams_.size()); }
 
   /// Tempered log p(z | pose, map) of the current scan for a robot (base_link) pose.
@@ -32,7 +35,7 @@ class MeasurementModel {
     double end_x, end_y;  ///< endpoint in base_link (likelihood field)
     double angle;         ///< beam direction in base_link (beam model)
     double range;
-    bool max_range;  ///< no echo
+    bool max_range;  ///< no echo within the model's range
   };
   double logLikelihoodField(const mrpt::math::TPose2D& pose) const;
   double logBeamModel(const mrpt::math::TPose2D& pose) const;

@@ -1,25 +1,27 @@
 // The filter's answer: weighted mean and covariance of the dominant particle cluster (instead of
-// the listing's single heaviest particle), and whether that answer can be trusted.
+// the listing's single heaviest particle), and the clusters behind it.
 #pragma once
 
 #include <mrpt/bayes/CProbabilityParticle.h>
-#include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/math/TPose2D.h>
+#include <wheelchair_core/pose2d.h>
 
-#include <string>
+#include <Eigen/Core>
+
 #include <vector>
 
 namespace wheelchair_kld {
 
-/// A pose hypothesis; log_w holds the log of its normalized weight.
+/// A pose hypothesis inside the filter (MRPT's particle type); log_w holds the log of its
+/// normalized weight.
 using Particle = mrpt::bayes::CProbabilityParticle<mrpt::math::TPose2D,
                                                    mrpt::bayes::particle_storage_mode::VALUE>;
 
 struct PoseEstimate {
-  mrpt::math::TPose2D mean;
-  mrpt::math::CMatrixDouble33 cov;  ///< (x, y, theta) covariance of the dominant cluster
-  double cluster_weight = 0;        ///< share of the total weight in the dominant cluster
-  int cluster_count = 0;            ///< clusters holding >= 1 % of the weight
+  wheelchair_core::Pose2D mean;                   ///< base_link in the map frame
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();  ///< (x, y, yaw) of the dominant cluster
+  double cluster_weight = 0;  ///< share of the total weight in the dominant cluster
+  int cluster_count = 0;      ///< clusters holding >= 1 % of the weight
   /// Cluster of every particle (index into cluster_weights).
   std::vector<int> particle_cluster;
   std::vector<double> cluster_weights;  ///< share of the total weight of every cluster
@@ -27,17 +29,12 @@ struct PoseEstimate {
 };
 
 /// Weighted mean (circular for the heading) of the particles of cluster `c`.
-mrpt::math::TPose2D clusterMean(const std::vector<Particle>& particles, const PoseEstimate& est,
-                                int c);
+wheelchair_core::Pose2D clusterMean(const std::vector<Particle>& particles, const PoseEstimate& est,
+                                    int c);
 
 /// Groups particles into connected cells of size (cell_xy, cell_xy, cell_theta) (heading wraps)
 /// and returns the weighted mean / covariance of the heaviest group.
 PoseEstimate estimateDominantCluster(const std::vector<Particle>& particles, double cell_xy,
                                      double cell_theta);
-
-struct LocalizationStatus {
-  bool localized = false;
-  std::string reason;  ///< why not localized ("" when localized)
-};
 
 }  // namespace wheelchair_kld

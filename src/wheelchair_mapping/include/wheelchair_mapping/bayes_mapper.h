@@ -6,22 +6,13 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <wheelchair_core/laser_scan.h>
 #include <wheelchair_core/occupancy_map.h>
-#include <wheelchair_mapping/inverse_sensor_model.h>
+#include <wheelchair_mapping/mapper_config.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 
 #include <cstddef>
 #include <string>
 
 namespace wheelchair_mapping {
-
-struct MapperConfig {
-  double resolution = 0.05;    ///< [m]
-  double initial_size = 20.0;  ///< side of the initial square grid centred on (0, 0) [m]
-  /// Extra border added whenever the grid grows to fit a scan [m].
-  double growth_margin = 5.0;
-  size_t expected_beams = 0;  ///< 0: any beam count
-  InverseSensorModel model;
-};
 
 struct InsertResult {
   bool inserted = false;

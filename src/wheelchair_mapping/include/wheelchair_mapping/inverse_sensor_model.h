@@ -26,8 +26,8 @@ struct InverseSensorModel {
   /// return as occupied (0: one cell per return).
   double beam_width = 0.0;
 
-  /// Empty if consistent, else the reason (probabilities in (0,1), hit > 0.5 > pass, ...).
-  std::string problem() const;
+  /// Empty if consistent, else every problem (probabilities in (0,1), hit > 0.5 > pass, ...).
+  std::string validate() const;
 };
 
 }  // namespace wheelchair_mapping

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <geometry_msgs/Pose.h>
+#include <geometry_msgs/PoseArray.h>
 #include <geometry_msgs/PoseWithCovariance.h>
 #include <geometry_msgs/Quaternion.h>
 #include <geometry_msgs/Transform.h>
@@ -12,9 +13,11 @@
 #include <ros/time.h>
 #include <sensor_msgs/LaserScan.h>
 #include <wheelchair_core/laser_scan.h>
+#include <wheelchair_core/localization_status.h>
 #include <wheelchair_core/map_limits.h>
 #include <wheelchair_core/occupancy_map.h>
 #include <wheelchair_core/pose2d.h>
+#include <wheelchair_msgs/LocalizationStatus.h>
 
 #include <Eigen/Core>
 
@@ -42,6 +45,12 @@ geometry_msgs::Transform toTransformMsg(const wheelchair_core::Pose2D& pose);
 /// (the other entries zero).
 Eigen::Matrix3d planarCovariance(const boost::array<double, 36>& covariance);
 boost::array<double, 36> toRosCovariance(const Eigen::Matrix3d& planar);
+/// A planar pose with its (x, y, yaw) covariance, e.g. a localizer's estimate.
+geometry_msgs::PoseWithCovariance toPoseWithCovarianceMsg(const wheelchair_core::Pose2D& pose,
+                                                          const Eigen::Matrix3d& covariance);
+/// Many poses in one frame, e.g. a particle filter's cloud.
+geometry_msgs::PoseArray toPoseArrayMsg(const std::vector<wheelchair_core::Pose2D>& poses,
+                                        const std::string& frame_id, const ros::Time& stamp);
 
 /// The scan's fields as they are (REP-117 meanings are the core's classifyBeam).
 wheelchair_core::LaserScan2D fromLaserScanMsg(const sensor_msgs::LaserScan& msg);
@@ -66,6 +75,10 @@ std::string occupancyGridProblem(const nav_msgs::OccupancyGrid& msg,
 /// Throws std::invalid_argument with occupancyGridProblem()'s reason when the grid is not usable.
 wheelchair_core::OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg,
                                                 const wheelchair_core::MapLimits& limits = {});
+
+/// The localizer's verdict with the rider's sentence of its state (wheelchair_core::riderSentence).
+wheelchair_msgs::LocalizationStatus toLocalizationStatusMsg(
+    const wheelchair_core::LocalizationStatus& status, const ros::Time& stamp);
 
 nav_msgs::Path toPathMsg(const std::vector<wheelchair_core::Pose2D>& poses,
                          const std::string& frame_id, const ros::Time& stamp);

@@ -1,7 +1,8 @@
-// Closed-loop simulation of PathTracker on the paper's model (test support of the controller's
-// tests and benchmark, not part of the controller): the "real" chair is integrated with RK4 at
-// 1 kHz (optionally with a different mass, rolling resistance, quantized encoders, noisy pose),
-// the controller runs at 50 Hz.
+// Closed-loop simulation of PathTracker (test support of the controller's tests and benchmark,
+// not part of the controller): the "real" chair is the simulator's (wheelchair_sim::Simulator:
+// the paper's model, eq. 15, by RK4 at 1 kHz, rolling resistance, the parking brake; optionally
+// a different mass), measured through quantized encoders and a noisy pose; the controller runs
+// at 50 Hz.
 #pragma once
 
 #include <wheelchair_controller/path_tracker.h>

@@ -1,0 +1,79 @@
+#include "drive_source.h"
+
+#include <wheelchair_ros/conversions.h>
+
+#include <cmath>
+
+namespace wheelchair_display {
+namespace {
+
+/// [s] a controller status about a path stamped this much before the goal still answers it
+/// (another process's clock); an older one belongs to an earlier drive.
+constexpr double kStampTolerance = 0.1;
+/// [m] the controller may abort "goal not reached within tolerance" a few mm off: still there.
+constexpr double kArrivalRadius = 0.15;
+
+bool near(const wheelchair_core::Pose2D& a, double x, double y) {
+  return std::hypot(a.x - x, a.y - y) < 0.05;
+}
+
+}  // namespace
+
+LegacyDriveSource::LegacyDriveSource(ros::NodeHandle& nh, DriveTracker& tracker,
+                                     const std::vector<wheelchair_hmi::Place>& places)
+    : tracker_(tracker), places_(places) {
+  subs_.push_back(nh.subscribe("move_base_simple/goal", 5, &LegacyDriveSource::onGoal, this));
+  subs_.push_back(nh.subscribe("plan", 2, &LegacyDriveSource::onPath, this));
+  subs_.push_back(nh.subscribe("plan_certificate", 2, &LegacyDriveSource::onCertificate, this));
+  subs_.push_back(
+      nh.subscribe("controller/path_status", 10, &LegacyDriveSource::onPathStatus, this));
+  subs_.push_back(nh.subscribe("user_stop", 5, &LegacyDriveSource::onUserStop, this));
+}
+
+void LegacyDriveSource::expectOwnGoal(const std::string& destination,
+                                      const wheelchair_core::Pose2D& goal) {
+  own_goal_ = std::make_pair(destination, goal);
+}
+
+std::string LegacyDriveSource::nameOf(const wheelchair_core::Pose2D& goal) const {
+  if (own_goal_ && near(own_goal_->second, goal.x, goal.y)) return own_goal_->first;
+  for (const auto& p : places_)
+    if (near(goal, p.pose.x, p.pose.y)) return p.name;
+  return "";
+}
+
+void LegacyDriveSource::onGoal(const geometry_msgs::PoseStamped::ConstPtr& msg) {
+  const wheelchair_core::Pose2D goal = wheelchair_ros::toPose2D(msg->pose);
+  goal_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+  tracker_.goal(nameOf(goal), goal, ros::Time::now().toSec());
+  own_goal_.reset();
+}
+
+void LegacyDriveSource::onPath(const nav_msgs::Path::ConstPtr& msg) {
+  if (msg->header.stamp + ros::Duration(kStampTolerance) < goal_stamp_) return;
+  tracker_.route(wheelchair_ros::fromPathMsg(*msg), ros::Time::now().toSec());
+}
+
+void LegacyDriveSource::onCertificate(const wheelchair_msgs::PlanCertificate::ConstPtr& msg) {
+  if (msg->header.stamp + ros::Duration(kStampTolerance) < goal_stamp_) return;
+  if (!msg->success) {
+    ROS_INFO("display: the planner refused the goal: %s", msg->failure_reason.c_str());
+    tracker_.refused(ros::Time::now().toSec());
+  }
+}
+
+void LegacyDriveSource::onUserStop(const std_msgs::Empty::ConstPtr&) {
+  tracker_.riderStopped(ros::Time::now().toSec());
+}
+
+void LegacyDriveSource::onPathStatus(const actionlib_msgs::GoalStatus::ConstPtr& msg) {
+  if (msg->goal_id.stamp + ros::Duration(kStampTolerance) < goal_stamp_) return;
+  const double now = ros::Time::now().toSec();
+  if (msg->status == actionlib_msgs::GoalStatus::SUCCEEDED) tracker_.arrived(now);
+  if (msg->status == actionlib_msgs::GoalStatus::ABORTED) {
+    ROS_INFO("display: the drive ended: %s", msg->text.c_str());
+    tracker_.ended(now, kArrivalRadius);
+  }
+}
+
+}  // namespace wheelchair_display

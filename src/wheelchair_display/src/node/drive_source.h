@@ -1,0 +1,48 @@
+// Where the display learns about drives today: any goal on /move_base_simple/goal (the display's,
+// the HMI's, rviz's), the planner's /plan and /plan_certificate, and the controller's path
+// status, and any /user_stop. When the navigator (issue 22) owns drives, this file is replaced by a
+// client of its move_base action (goal, feedback with the distance left, one result with a rider
+// sentence); the DriveTracker it feeds stays as it is.
+#pragma once
+
+#include <wheelchair_display/drive_tracker.h>
+#include <wheelchair_hmi/places.h>
+
+#include <actionlib_msgs/GoalStatus.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <std_msgs/Empty.h>
+#include <wheelchair_msgs/PlanCertificate.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace wheelchair_display {
+
+class LegacyDriveSource {
+ public:
+  LegacyDriveSource(ros::NodeHandle& nh, DriveTracker& tracker,
+                    const std::vector<wheelchair_hmi::Place>& places);
+  /// The display itself sends this goal for `destination` next (so it is told by name).
+  void expectOwnGoal(const std::string& destination, const wheelchair_core::Pose2D& goal);
+
+ private:
+  void onGoal(const geometry_msgs::PoseStamped::ConstPtr& msg);
+  void onPath(const nav_msgs::Path::ConstPtr& msg);
+  void onCertificate(const wheelchair_msgs::PlanCertificate::ConstPtr& msg);
+  void onPathStatus(const actionlib_msgs::GoalStatus::ConstPtr& msg);
+  /// A stop from anyone (this display, another, the HMI's switch): the rider stopped the drive.
+  void onUserStop(const std_msgs::Empty::ConstPtr&);
+  /// The name of the place at `goal`, the display's own destination, or "" (a spot).
+  std::string nameOf(const wheelchair_core::Pose2D& goal) const;
+
+  DriveTracker& tracker_;
+  const std::vector<wheelchair_hmi::Place>& places_;
+  std::optional<std::pair<std::string, wheelchair_core::Pose2D>> own_goal_;
+  ros::Time goal_stamp_;
+  std::vector<ros::Subscriber> subs_;
+};
+
+}  // namespace wheelchair_display
