@@ -13,6 +13,7 @@
 #include <wheelchair_msgs/PlanCertificate.h>
 #include <wheelchair_msgs/SafetyStatus.h>
 #include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/drive_channel.h>
 #include <wheelchair_ros/parameters.h>
 
 #include <actionlib_msgs/GoalStatus.h>
@@ -238,7 +239,14 @@ class HmiNodelet : public nodelet::Nodelet {
     announce_pub_.publish(msg);
   }
 
+  /// The rider's destination: their command to go on. It releases a latched stop of the
+  /// supervisor and the base driver in this process (the only release there is), then the goal
+  /// goes out.
   void publishGoal(const Place& place) {
+    if (!wheelchair_ros::releaseStopByRider("hmi: go to " + place.name))
+      NODELET_WARN_ONCE(
+          "hmi: no supervisor or base driver in this process: a latched stop "
+          "cannot be released from here");
     geometry_msgs::PoseStamped goal;
     goal.header.frame_id = map_frame_;
     goal.header.stamp = ros::Time::now();

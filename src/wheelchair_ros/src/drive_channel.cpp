@@ -1,5 +1,7 @@
 #include <wheelchair_ros/drive_channel.h>
 
+#include <ros/time.h>
+
 #include <stdexcept>
 
 namespace wheelchair_ros {
@@ -115,6 +117,13 @@ std::shared_ptr<DriveChannel> driveChannel() {
     shared = channel;
   }
   return channel;
+}
+
+bool releaseStopByRider(const std::string& source) {
+  RiderRelease release;
+  release.stamp = ros::Time::isValid() ? ros::Time::now().toSec() : 0.0;
+  release.source = source;
+  return driveChannel()->releaseByRider(release);
 }
 
 }  // namespace wheelchair_ros

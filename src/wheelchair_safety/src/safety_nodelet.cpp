@@ -1,14 +1,19 @@
 // ROS layer of the safety supervisor: feeds it the localizer's estimate and status, tf
 // map -> base_link, the laser (returns projected into the map), the map, the plan, the base
-// driver's status and the rider's commands; publishes a latched stop flag and the typed status
-// (wheelchair_msgs/SafetyStatus) whenever the verdict changes.
+// driver's status and the rider's stop. In the command path through the process's drive channel
+// (wheelchair_ros/drive_channel.h): at every check a sequence-numbered permit to the base driver
+// (which brakes without a fresh one: unloading, crashing or hanging the supervisor stops the
+// chair) and its verdict to the controller (a hold while it says stop). A stop latches until the
+// rider's release (wheelchair_ros::releaseStopByRider, called by the HMI), never by a topic.
+// Publishes the latched stop flag and the typed status (wheelchair_msgs/SafetyStatus), outputs
+// only, whenever the verdict changes.
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/drive_channel.h>
 #include <wheelchair_ros/parameters.h>
 #include <wheelchair_ros/shared_tf.h>
 #include <wheelchair_safety/safety_supervisor.h>
 
-#include <diagnostic_msgs/DiagnosticStatus.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -21,6 +26,7 @@
 #include <tf2_ros/buffer.h>
 #include <pluginlib/class_list_macros.hpp>
 
+#include <atomic>
 #include <memory>
 #include <mutex>
 
@@ -32,7 +38,9 @@ namespace wheelchair_safety {
 struct SafetyNodeletConfig {
   SafetyLimits limits;
   wheelchair_core::MapLimits map_limits;  ///< a bigger or broken /map is refused
-  double rate = 20.0;                     ///< [Hz] checks per second (and at once on a new goal)
+  /// [Hz] checks per second (and at once on a new goal), each with a permit to the driver: the
+  /// command rate (the driver's permit_timeout is 100 ms).
+  double rate = 50.0;
   std::string map_frame = "map";
   std::string base_frame = "base_link";
 
@@ -58,9 +66,24 @@ void readSafetyNodeletConfig(wheelchair_core::ConfigReader& reader, SafetyNodele
 }
 
 class SafetyNodelet : public nodelet::Nodelet {
+ public:
+  ~SafetyNodelet() override {
+    timer_.stop();
+    registration_.reset();  // no permit any more: the driver brakes within its permit_timeout
+  }
+
  private:
   void onInit() override {
     ros::NodeHandle nh = getNodeHandle();
+    // The chair's supervisor: the one that permits motion (a second one is refused).
+    channel_ = wheelchair_ros::driveChannel();
+    try {
+      registration_ = channel_->attachSupervisor(
+          {[this](const wheelchair_ros::DriverReport& r) { onDriverReport(r); },
+           [this](const wheelchair_ros::RiderRelease& r) { onRiderRelease(r); }});
+    } catch (const std::logic_error& e) {
+      throw wheelchair_core::ConfigError(getName() + ": " + e.what());
+    }
     const auto config = wheelchair_ros::loadParameters<SafetyNodeletConfig>(
         getPrivateNodeHandle(), readSafetyNodeletConfig);
     map_frame_ = config.map_frame;
@@ -76,9 +99,9 @@ class SafetyNodelet : public nodelet::Nodelet {
     subs_.push_back(nh.subscribe("scan", 5, &SafetyNodelet::onScan, this));
     subs_.push_back(nh.subscribe("kld_pose", 5, &SafetyNodelet::onEstimate, this));
     subs_.push_back(nh.subscribe("localization/status", 5, &SafetyNodelet::onLocalization, this));
-    subs_.push_back(nh.subscribe("base_driver/status", 5, &SafetyNodelet::onDriver, this));
     subs_.push_back(nh.subscribe("user_stop", 5, &SafetyNodelet::onUserStop, this));
     subs_.push_back(nh.subscribe("move_base_simple/goal", 5, &SafetyNodelet::onGoal, this));
+    ready_ = true;
     timer_ = nh.createTimer(ros::Duration(1.0 / config.rate), &SafetyNodelet::onTimer, this);
   }
 
@@ -137,26 +160,36 @@ class SafetyNodelet : public nodelet::Nodelet {
     supervisor_->onScan(msg->header.stamp.toSec(), returns);
   }
 
-  void onDriver(const diagnostic_msgs::DiagnosticStatus::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onDriverStatus(ros::Time::now().toSec(),
-                                msg->level >= diagnostic_msgs::DiagnosticStatus::ERROR,
-                                msg->message);
-  }
-
   void onUserStop(const std_msgs::Empty::ConstPtr&) {
     std::lock_guard<std::mutex> lock(mutex_);
     supervisor_->onUserStop(ros::Time::now().toSec());
   }
 
-  /// A new goal is the rider's command to go on: the verdict goes out at once, before the
-  /// planner's path reaches the controller (which ignores paths while stopped).
-  void onGoal(const geometry_msgs::PoseStamped::ConstPtr&) {
+  /// A goal is not a release (any node can publish one, and re-publishing a plan cannot undo a
+  /// stop): the verdict goes out at once, before the planner's path reaches the controller.
+  void onGoal(const geometry_msgs::PoseStamped::ConstPtr&) { update(); }
+
+  /// The rider's own command to go on (the HMI, through the drive channel): clears the latched
+  /// stop; if a condition still holds, this very check stops again.
+  void onRiderRelease(const wheelchair_ros::RiderRelease& release) {
+    if (!ready_) return;
     {
       std::lock_guard<std::mutex> lock(mutex_);
+      if (supervisor_->latched().stop)
+        NODELET_WARN("safety: stop released by the rider (%s)", release.source.c_str());
       supervisor_->onUserCommand(ros::Time::now().toSec());
     }
     update();
+  }
+
+  /// The driver's state (drive channel, on every change; any node could publish the driver's
+  /// status topic): a fault or a latched stop (a foreign command, a hang...) that lasts
+  /// driver_fault_grace is the supervisor's stop too, held until the rider's release.
+  void onDriverReport(const wheelchair_ros::DriverReport& report) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    supervisor_->onDriverStatus(
+        ros::Time::now().toSec(), report.fault || report.latched,
+        report.sentence + (report.detail.empty() ? "" : ": ") + report.detail);
   }
 
   void onTimer(const ros::TimerEvent&) { update(); }
@@ -169,21 +202,37 @@ class SafetyNodelet : public nodelet::Nodelet {
       have_pose = true;
     } catch (const tf2::TransformException&) {
     }
-    std::lock_guard<std::mutex> lock(mutex_);
+    std::unique_lock<std::mutex> lock(mutex_);
     if (have_pose)
       supervisor_->onPose(base_in_map.header.stamp.toSec(),
                           wheelchair_ros::toPose2D(base_in_map.transform));
     const ros::Time now = ros::Time::now();
     const wheelchair_msgs::SafetyStatus status =
         toSafetyStatus(supervisor_->check(now.toSec()), now);
-    if (published_ && sameVerdict(status, last_)) return;
-    if (status.stop) NODELET_WARN("STOP: %s: %s", status.sentence.c_str(), status.detail.c_str());
-    std_msgs::Bool stop;
-    stop.data = status.stop;
-    stop_pub_.publish(stop);
-    status_pub_.publish(status);
-    published_ = true;
-    last_ = status;
+    wheelchair_ros::DrivePermit permit;
+    permit.sequence = ++permit_sequence_;
+    permit.stamp = now.toSec();
+    permit.stop = status.stop;
+    wheelchair_ros::SafetyHold hold;
+    hold.stop = status.stop;
+    hold.sentence = status.sentence;
+    hold.detail = status.detail;
+    const bool changed = !published_ || !sameVerdict(status, last_);
+    if (changed) {
+      if (status.stop) NODELET_WARN("STOP: %s: %s", status.sentence.c_str(), status.detail.c_str());
+      std_msgs::Bool stop;
+      stop.data = status.stop;
+      stop_pub_.publish(stop);
+      status_pub_.publish(status);
+      published_ = true;
+      last_ = status;
+    }
+    lock.unlock();
+    // After unlocking (the channel calls the driver and the controller, whose reports come back
+    // here): the verdict to the controller first, so that a stop holds it before the permit
+    // tells the driver; every check, so that a controller loaded later learns it too.
+    channel_->hold(hold);
+    channel_->grant(permit);
   }
 
   std::mutex mutex_;
@@ -197,6 +246,10 @@ class SafetyNodelet : public nodelet::Nodelet {
   ros::Publisher stop_pub_, status_pub_;
   std::vector<ros::Subscriber> subs_;
   ros::Timer timer_;
+  std::shared_ptr<wheelchair_ros::DriveChannel> channel_;
+  std::unique_ptr<wheelchair_ros::DriveChannel::Registration> registration_;
+  std::uint64_t permit_sequence_ = 0;
+  std::atomic<bool> ready_{false};  ///< set up: a release may check
   bool published_ = false;
   wheelchair_msgs::SafetyStatus last_;
 };

@@ -11,6 +11,7 @@
 #include <pluginlib/class_list_macros.hpp>
 
 #include <cmath>
+#include <cstdio>
 
 namespace wheelchair_controller {
 
@@ -48,6 +49,7 @@ uint8_t goalStatusOf(TrackerState state) {
 }  // namespace
 
 ControllerNodelet::~ControllerNodelet() {
+  registration_.reset();  // no hold or report reaches this nodelet any more
   {
     std::lock_guard<std::mutex> lock(mutex_);
     shutdown_ = true;
@@ -58,6 +60,16 @@ ControllerNodelet::~ControllerNodelet() {
 
 void ControllerNodelet::onInit() {
   ros::NodeHandle& nh = getNodeHandle();
+  // The chair's controller: the only one that commands the base driver (a second one in the
+  // process is refused, before anything is set up).
+  channel_ = wheelchair_ros::driveChannel();
+  try {
+    registration_ = channel_->attachController(
+        {[this](const wheelchair_ros::SafetyHold& h) { onHold(h); },
+         [this](const wheelchair_ros::DriverReport& r) { onDriverReport(r); }});
+  } catch (const std::logic_error& e) {
+    throw wheelchair_core::ConfigError(getName() + ": " + e.what());
+  }
   const ControllerParameters params = wheelchair_ros::loadParameters<ControllerParameters>(
       getPrivateNodeHandle(), readControllerParameters);
   ros::NodeHandle& pnh = getPrivateNodeHandle();
@@ -65,6 +77,8 @@ void ControllerNodelet::onInit() {
   tracker_ = std::make_unique<PathTracker>(chair_, params.tracker);
   map_frame_ = params.map_frame;
   base_frame_ = params.base_frame;
+  gap_timeout_ = params.gap_timeout;
+  wall_gap_timeout_ = params.wall_gap_timeout;
 
   tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
   torque_pub_ = nh.advertise<wheelchair_msgs::WheelTorques>("wheel_torques", 10);
@@ -74,7 +88,6 @@ void ControllerNodelet::onInit() {
   path_status_pub_ = pnh.advertise<actionlib_msgs::GoalStatus>("path_status", 10, true);
   worker_ = std::thread(&ControllerNodelet::buildReferences, this);
   path_sub_ = nh.subscribe("plan", 1, &ControllerNodelet::onPath, this);
-  safety_sub_ = nh.subscribe("safety/stop", 1, &ControllerNodelet::onSafetyStop, this);
   user_stop_sub_ = nh.subscribe("user_stop", 5, &ControllerNodelet::onUserStop, this);
   localization_sub_ =
       nh.subscribe("localization/status", 5, &ControllerNodelet::onLocalizationStatus, this);
@@ -128,13 +141,23 @@ void ControllerNodelet::buildReferences() {
   }
 }
 
-void ControllerNodelet::onSafetyStop(const std_msgs::Bool::ConstPtr& msg) {
+void ControllerNodelet::onHold(const wheelchair_ros::SafetyHold& hold) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (msg->data) {
-    tracker_->hold("safety", "safety stop (supervisor)");
-  } else {
+  if (hold.stop) {
+    const std::string reason = "safety stop: " + hold.sentence;
+    if (safety_hold_ && *safety_hold_ == reason) return;  // the same verdict again
+    safety_hold_ = reason;
+    tracker_->hold("safety", reason);
+  } else if (safety_hold_) {
+    safety_hold_.reset();
     tracker_->release("safety");
   }
+}
+
+void ControllerNodelet::onDriverReport(const wheelchair_ros::DriverReport& report) {
+  if (!report.latched) return;  // faults that end no drive (at rest) are the supervisor's news
+  std::lock_guard<std::mutex> lock(mutex_);
+  tracker_->abort("the motors stopped: " + report.sentence);
 }
 
 void ControllerNodelet::onUserStop(const std_msgs::Empty::ConstPtr&) {
@@ -174,8 +197,25 @@ std::optional<PoseMeasurement> ControllerNodelet::lookupPose() {
 
 void ControllerNodelet::onTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
+  const ros::WallTime wall = ros::WallTime::now();
   const std::optional<PoseMeasurement> pose = lookupPose();
   std::lock_guard<std::mutex> lock(mutex_);
+  // A hang (the process stopped, starved, or its clock stood still): the reference ran on while
+  // the motors braked. The drive ends; the chair restarts from rest on the rider's command.
+  const TrackerState state = tracker_->state();
+  const bool moving = state == TrackerState::kAligning || state == TrackerState::kTracking ||
+                      state == TrackerState::kRotatingToGoal;
+  if (moving && !last_step_.isZero()) {
+    const double gap = (now - last_step_).toSec(), wall_gap = (wall - last_wall_step_).toSec();
+    if (gap > gap_timeout_ || wall_gap > wall_gap_timeout_) {
+      char reason[96];
+      std::snprintf(reason, sizeof(reason), "control steps paused for %.2f s",
+                    std::max(gap, wall_gap));
+      tracker_->abort(reason);
+    }
+  }
+  last_step_ = now;
+  last_wall_step_ = wall;
   publish(tracker_->update(now.toSec(), pose, wheels_), now);
 }
 
@@ -209,6 +249,15 @@ void ControllerNodelet::publishStatus(const TrackerOutput& out) {
 }
 
 void ControllerNodelet::publish(const TrackerOutput& out, const ros::Time& now) {
+  // To the base driver of this process (the only torque input it takes).
+  wheelchair_ros::DriveCommand command;
+  command.right = out.command.torque(0);
+  command.left = out.command.torque(1);
+  command.brake = out.command.brake;
+  command.stamp = now.toSec();
+  command.sequence = ++command_sequence_;
+  channel_->submit(command);
+  // The same, for logs and rviz (and the simulator's direct mode in the controller's tests).
   wheelchair_msgs::WheelTorques cmd;
   cmd.header.stamp = now;
   cmd.header.frame_id = base_frame_;

@@ -149,4 +149,13 @@ class DriveChannel : public std::enable_shared_from_this<DriveChannel> {
 /// holds it for its lifetime, so that its Registration can detach).
 std::shared_ptr<DriveChannel> driveChannel();
 
+/// THE way to release a latched stop: the rider's own command to go on (a destination chosen on
+/// the HMI; later the navigator acting on the rider's command). Call it in the chair process just
+/// before the command it releases for (the goal): it clears the supervisor's latched stop and the
+/// base driver's latched stop / e-stop of this process (a condition that still holds stops again
+/// at the supervisor's next check, at once). `source` says who relays it, for the log
+/// ("hmi: go to kitchen_door"). False if neither the supervisor nor the driver is in this process.
+/// No topic or service releases a stop: /safety/stop is an output, ~clear_estop is refused.
+bool releaseStopByRider(const std::string& source);
+
 }  // namespace wheelchair_ros
