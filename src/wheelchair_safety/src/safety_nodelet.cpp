@@ -89,7 +89,10 @@ class SafetyNodelet : public nodelet::Nodelet {
     map_frame_ = config.map_frame;
     base_frame_ = config.base_frame;
     map_limits_ = config.map_limits;
-    supervisor_ = std::make_unique<SafetySupervisor>(config.limits);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);  // the channel may call before onInit ends
+      supervisor_ = std::make_unique<SafetySupervisor>(config.limits);
+    }
     tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
 
     stop_pub_ = nh.advertise<std_msgs::Bool>("safety/stop", 1, true);
@@ -187,6 +190,9 @@ class SafetyNodelet : public nodelet::Nodelet {
   /// driver_fault_grace is the supervisor's stop too, held until the rider's release.
   void onDriverReport(const wheelchair_ros::DriverReport& report) {
     std::lock_guard<std::mutex> lock(mutex_);
+    if (!supervisor_) return;  // not set up yet: the driver reports again on its next change
+    if ((report.fault || report.latched) && !report.sentence.empty())
+      driver_sentence_ = report.sentence;  // the rider hears the driver's words for its stop
     supervisor_->onDriverStatus(
         ros::Time::now().toSec(), report.fault || report.latched,
         report.sentence + (report.detail.empty() ? "" : ": ") + report.detail);
@@ -207,8 +213,9 @@ class SafetyNodelet : public nodelet::Nodelet {
       supervisor_->onPose(base_in_map.header.stamp.toSec(),
                           wheelchair_ros::toPose2D(base_in_map.transform));
     const ros::Time now = ros::Time::now();
-    const wheelchair_msgs::SafetyStatus status =
-        toSafetyStatus(supervisor_->check(now.toSec()), now);
+    wheelchair_msgs::SafetyStatus status = toSafetyStatus(supervisor_->check(now.toSec()), now);
+    if (status.reason == wheelchair_msgs::SafetyStatus::DRIVER_FAULT && !driver_sentence_.empty())
+      status.sentence = driver_sentence_;  // e.g. "another program tried to drive the chair"
     wheelchair_ros::DrivePermit permit;
     permit.sequence = ++permit_sequence_;
     permit.stamp = now.toSec();
@@ -242,6 +249,7 @@ class SafetyNodelet : public nodelet::Nodelet {
   wheelchair_core::MapLimits map_limits_;
   bool have_status_ = false, localized_ = false;
   std::string why_not_ = "no localizer status yet";
+  std::string driver_sentence_;  ///< the driver's words for its last fault or latched stop
   Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Identity();
   ros::Publisher stop_pub_, status_pub_;
   std::vector<ros::Subscriber> subs_;

@@ -69,7 +69,8 @@ class ControllerNodelet : public nodelet::Nodelet {
   void onOdometry(const nav_msgs::Odometry::ConstPtr& msg);
   void onTimer(const ros::TimerEvent& event);
   std::optional<PoseMeasurement> lookupPose();
-  void publish(const TrackerOutput& out, const ros::Time& now);
+  /// Publishes the step's topics; returns the command for the driver (submitted unlocked).
+  wheelchair_ros::DriveCommand publish(const TrackerOutput& out, const ros::Time& now);
   void publishStatus(const TrackerOutput& out);
   /// The pending path is decided (swapped in, refused, or dropped): the status now concerns it.
   void settlePending();

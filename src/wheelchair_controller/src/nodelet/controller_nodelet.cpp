@@ -74,7 +74,10 @@ void ControllerNodelet::onInit() {
       getPrivateNodeHandle(), readControllerParameters);
   ros::NodeHandle& pnh = getPrivateNodeHandle();
   chair_ = wheelchair_description::loadChairParams(params.chair_file);
-  tracker_ = std::make_unique<PathTracker>(chair_, params.tracker);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);  // the channel may call before onInit ends
+    tracker_ = std::make_unique<PathTracker>(chair_, params.tracker);
+  }
   map_frame_ = params.map_frame;
   base_frame_ = params.base_frame;
   gap_timeout_ = params.gap_timeout;
@@ -143,6 +146,7 @@ void ControllerNodelet::buildReferences() {
 
 void ControllerNodelet::onHold(const wheelchair_ros::SafetyHold& hold) {
   std::lock_guard<std::mutex> lock(mutex_);
+  if (!tracker_) return;  // not set up yet: the supervisor says it again at its next check
   if (hold.stop) {
     const std::string reason = "safety stop: " + hold.sentence;
     if (safety_hold_ && *safety_hold_ == reason) return;  // the same verdict again
@@ -157,6 +161,7 @@ void ControllerNodelet::onHold(const wheelchair_ros::SafetyHold& hold) {
 void ControllerNodelet::onDriverReport(const wheelchair_ros::DriverReport& report) {
   if (!report.latched) return;  // faults that end no drive (at rest) are the supervisor's news
   std::lock_guard<std::mutex> lock(mutex_);
+  if (!tracker_) return;  // nothing to end yet
   tracker_->abort("the motors stopped: " + report.sentence);
 }
 
@@ -199,24 +204,30 @@ void ControllerNodelet::onTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
   const ros::WallTime wall = ros::WallTime::now();
   const std::optional<PoseMeasurement> pose = lookupPose();
-  std::lock_guard<std::mutex> lock(mutex_);
-  // A hang (the process stopped, starved, or its clock stood still): the reference ran on while
-  // the motors braked. The drive ends; the chair restarts from rest on the rider's command.
-  const TrackerState state = tracker_->state();
-  const bool moving = state == TrackerState::kAligning || state == TrackerState::kTracking ||
-                      state == TrackerState::kRotatingToGoal;
-  if (moving && !last_step_.isZero()) {
-    const double gap = (now - last_step_).toSec(), wall_gap = (wall - last_wall_step_).toSec();
-    if (gap > gap_timeout_ || wall_gap > wall_gap_timeout_) {
-      char reason[96];
-      std::snprintf(reason, sizeof(reason), "control steps paused for %.2f s",
-                    std::max(gap, wall_gap));
-      tracker_->abort(reason);
+  wheelchair_ros::DriveCommand command;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    // A hang (the process stopped, starved, or its clock stood still): the reference ran on while
+    // the motors braked. The drive ends; the chair restarts from rest on the rider's command.
+    const TrackerState state = tracker_->state();
+    const bool moving = state == TrackerState::kAligning || state == TrackerState::kTracking ||
+                        state == TrackerState::kRotatingToGoal;
+    if (moving && !last_step_.isZero()) {
+      const double gap = (now - last_step_).toSec(), wall_gap = (wall - last_wall_step_).toSec();
+      if (gap > gap_timeout_ || wall_gap > wall_gap_timeout_) {
+        char reason[96];
+        std::snprintf(reason, sizeof(reason), "control steps paused for %.2f s",
+                      std::max(gap, wall_gap));
+        tracker_->abort(reason);
+      }
     }
+    last_step_ = now;
+    last_wall_step_ = wall;
+    command = publish(tracker_->update(now.toSec(), pose, wheels_), now);
   }
-  last_step_ = now;
-  last_wall_step_ = wall;
-  publish(tracker_->update(now.toSec(), pose, wheels_), now);
+  // To the base driver of this process (the only torque input it takes), after unlocking: the
+  // channel's hold and report calls come into this nodelet under the channel's lock.
+  channel_->submit(command);
 }
 
 void ControllerNodelet::settlePending() {
@@ -248,15 +259,14 @@ void ControllerNodelet::publishStatus(const TrackerOutput& out) {
   last_path_stamp_ = status_path_stamp_;
 }
 
-void ControllerNodelet::publish(const TrackerOutput& out, const ros::Time& now) {
-  // To the base driver of this process (the only torque input it takes).
+wheelchair_ros::DriveCommand ControllerNodelet::publish(const TrackerOutput& out,
+                                                        const ros::Time& now) {
   wheelchair_ros::DriveCommand command;
   command.right = out.command.torque(0);
   command.left = out.command.torque(1);
   command.brake = out.command.brake;
   command.stamp = now.toSec();
   command.sequence = ++command_sequence_;
-  channel_->submit(command);
   // The same, for logs and rviz (and the simulator's direct mode in the controller's tests).
   wheelchair_msgs::WheelTorques cmd;
   cmd.header.stamp = now;
@@ -267,7 +277,7 @@ void ControllerNodelet::publish(const TrackerOutput& out, const ros::Time& now) 
   torque_pub_.publish(cmd);
 
   publishStatus(out);
-  if (!out.has_reference) return;
+  if (!out.has_reference) return command;
   geometry_msgs::PointStamped ref;
   ref.header.stamp = now;
   ref.header.frame_id = map_frame_;
@@ -280,6 +290,7 @@ void ControllerNodelet::publish(const TrackerOutput& out, const ros::Time& now) 
   err.vector.y = out.reference.position.y() - out.y.y();
   err.vector.z = out.body_deviation;  // axle centre's distance from the planned path
   error_pub_.publish(err);
+  return command;
 }
 
 }  // namespace wheelchair_controller
