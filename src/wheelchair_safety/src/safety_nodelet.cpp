@@ -89,6 +89,7 @@ class SafetyNodelet : public nodelet::Nodelet {
     map_frame_ = config.map_frame;
     base_frame_ = config.base_frame;
     map_limits_ = config.map_limits;
+    driver_fault_grace_ = config.limits.driver_fault_grace;
     {
       std::lock_guard<std::mutex> lock(mutex_);  // the channel may call before onInit ends
       supervisor_ = std::make_unique<SafetySupervisor>(config.limits);
@@ -193,8 +194,12 @@ class SafetyNodelet : public nodelet::Nodelet {
     if (!supervisor_) return;  // not set up yet: the driver reports again on its next change
     if ((report.fault || report.latched) && !report.sentence.empty())
       driver_sentence_ = report.sentence;  // the rider hears the driver's words for its stop
+    // A latched driver stop is final (the grace is for a motor controller that re-arms within a
+    // command period): it counts at once, before its consequences (odometry and with it tf stop
+    // when the motor side loses power) make the rider hear another reason.
+    const double now = ros::Time::now().toSec();
     supervisor_->onDriverStatus(
-        ros::Time::now().toSec(), report.fault || report.latched,
+        report.latched ? now - driver_fault_grace_ : now, report.fault || report.latched,
         report.sentence + (report.detail.empty() ? "" : ": ") + report.detail);
   }
 
@@ -249,6 +254,7 @@ class SafetyNodelet : public nodelet::Nodelet {
   wheelchair_core::MapLimits map_limits_;
   bool have_status_ = false, localized_ = false;
   std::string why_not_ = "no localizer status yet";
+  double driver_fault_grace_ = 0.0;
   std::string driver_sentence_;  ///< the driver's words for its last fault or latched stop
   Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Identity();
   ros::Publisher stop_pub_, status_pub_;
