@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "map_accuracy.h"
+#include "sim_drive.h"
 
 namespace wheelchair_mapping {
 namespace {
@@ -48,144 +49,12 @@ constexpr double kInteriorWall = 0.10;  // [m] the flat's interior walls (make_w
 /// (not faster to catch up) on a loaded machine — rostest's time-limit guards the wall clock.
 constexpr double kDriveLimit = 60.0;
 
-struct Waypoint {
-  double x, y;
-};
-
 // Living room (axle at 5.5, 2.3 facing north, as in sim_mapping.test) → north to the kitchen
 // doorway's line (clear of the dining table) → east through the 0.9 m doorway (x 6.05,
 // y 4.4..5.3) → into the kitchen. Footprint clearance >= 0.14 m all along (checked on the grid).
 // Turns only where the footprint's 0.86 m swing radius is clear.
-//
-// The torque loops close over ROS, so their delay is the test's latency times the simulator's
-// speed (2.5, sim_mapping.test): the gains keep k delay < pi/2 up to ~0.5 s simulated, ~200 ms
-// of wall latency. Speed: 40 N m per m/s and wheel on ~145 kg (r 0.17 m) is a rate k of
-// ~3.2 /s; yaw: 20 N m per rad/s and wheel on ~25 kg m^2 (b 0.275 m) is ~2.6 /s. (150 and 60
-// at speed 5 were ~12 and ~8 /s, unstable beyond ~25 ms of latency: on a loaded machine the
-// chair rocked in place for minutes or hit the doorway.)
-const std::vector<Waypoint> kRoute = {{5.5, 4.85}, {8.0, 4.85}};
+const std::vector<wheelchair_test_drive::Waypoint> kRoute = {{5.5, 4.85}, {8.0, 4.85}};
 constexpr double kFinalYaw = -M_PI / 2;  // finally face the kitchen's south part
-
-double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
-
-// Line following on ground truth: (v, w) wanted to follow segment a→b, and whether b is reached.
-struct Command {
-  double v = 0, w = 0;
-  bool reached = false;
-};
-
-Command followSegment(const wheelchair_core::Pose2D& p, const Waypoint& a, const Waypoint& b) {
-  const double len = std::hypot(b.x - a.x, b.y - a.y);
-  const double ux = (b.x - a.x) / len, uy = (b.y - a.y) / len;
-  const double along = (p.x - a.x) * ux + (p.y - a.y) * uy;
-  Command c;
-  if (along >= len - 0.02) {
-    c.reached = true;
-    return c;
-  }
-  const double look = std::min(len, along + 0.4);  // pure pursuit on a point 0.4 m ahead
-  const double heading_error =
-      wrap(std::atan2(a.y + look * uy - p.y, a.x + look * ux - p.x) - p.yaw);
-  c.w = std::clamp(2.5 * heading_error, -0.8, 0.8);
-  c.v = std::abs(heading_error) > 0.3 ? 0.0 : std::min(0.6, 0.1 + 0.8 * (len - along));
-  return c;
-}
-
-class SimDrive {
- public:
-  SimDrive() {
-    torques_ = nh_.advertise<wheelchair_msgs::WheelTorques>("/wheel_torques", 10);
-    truth_sub_ = nh_.subscribe("/sim/ground_truth", 1000, &SimDrive::onTruth, this);
-    scan_sub_ = nh_.subscribe("/scan", 100, &SimDrive::onScan, this);
-    collision_sub_ = nh_.subscribe<std_msgs::Bool>(
-        "/sim/collision", 1, [this](const std_msgs::Bool::ConstPtr& m) { collided_ |= m->data; });
-  }
-
-  bool done() const { return finished_; }
-  /// [s] simulated time since the first ground-truth pose.
-  double simSeconds() const {
-    return truth_.empty() ? 0.0 : (truth_.rbegin()->first - first_truth_).toSec();
-  }
-  bool collided() const { return collided_; }
-  /// Scans received over /scan, each with the ground-truth base_link pose at its stamp.
-  const std::vector<std::pair<wheelchair_core::LaserScan2D, wheelchair_core::Pose2D>>& scans()
-      const {
-    return scans_;
-  }
-
- private:
-  void onTruth(const nav_msgs::Odometry::ConstPtr& m) {
-    const wheelchair_core::Pose2D p = wheelchair_ros::toPose2D(m->pose.pose);
-    if (first_truth_.isZero()) first_truth_ = m->header.stamp;
-    truth_[m->header.stamp] = p;
-    while (truth_.size() > 400) truth_.erase(truth_.begin());
-    matchScans();
-    if (m->header.stamp < next_control_) return;
-    next_control_ = m->header.stamp + ros::Duration(0.02);  // 50 Hz control
-    control(p, m->twist.twist.linear.x, m->twist.twist.angular.z);
-  }
-
-  void onScan(const sensor_msgs::LaserScan::ConstPtr& m) {
-    if (!finished_) pending_.push_back(m);
-    matchScans();
-  }
-
-  void matchScans() {
-    while (!pending_.empty()) {
-      const auto it = truth_.find(pending_.front()->header.stamp);
-      if (it == truth_.end()) {
-        if (!truth_.empty() && pending_.front()->header.stamp < truth_.begin()->first) {
-          pending_.erase(pending_.begin());  // its pose is gone
-          continue;
-        }
-        return;
-      }
-      scans_.emplace_back(wheelchair_ros::fromLaserScanMsg(*pending_.front()), it->second);
-      pending_.erase(pending_.begin());
-    }
-  }
-
-  void control(const wheelchair_core::Pose2D& p, double v, double w) {
-    Command c;
-    while (segment_ < kRoute.size()) {
-      const Waypoint from = segment_ == 0 ? start_ : kRoute[segment_ - 1];
-      if (segment_ == 0 && !started_) {
-        start_ = {p.x, p.y};
-        started_ = true;
-        continue;
-      }
-      c = followSegment(p, from, kRoute[segment_]);
-      if (!c.reached) break;
-      ++segment_;
-    }
-    if (segment_ == kRoute.size()) {
-      const double err = wrap(kFinalYaw - p.yaw);
-      c = Command{0.0, std::clamp(2.5 * err, -0.8, 0.8), false};
-      finished_ = std::abs(err) < 0.02 && std::abs(w) < 0.05 && std::abs(v) < 0.05;
-    }
-    // P control of speed and yaw rate through the sum and difference of the wheel torques.
-    wheelchair_msgs::WheelTorques t;
-    t.header.stamp = ros::Time::now();
-    const double common = 40.0 * (c.v - v), diff = 20.0 * (c.w - w);
-    t.right = common + diff;
-    t.left = common - diff;
-    t.brake = finished_;
-    torques_.publish(t);
-  }
-
-  ros::NodeHandle nh_;
-  ros::Publisher torques_;
-  ros::Subscriber truth_sub_, scan_sub_, collision_sub_;
-  std::map<ros::Time, wheelchair_core::Pose2D> truth_;
-  std::vector<sensor_msgs::LaserScan::ConstPtr> pending_;
-  std::vector<std::pair<wheelchair_core::LaserScan2D, wheelchair_core::Pose2D>> scans_;
-  ros::Time next_control_, first_truth_;
-  Waypoint start_{0, 0};
-  bool started_ = false;
-  size_t segment_ = 0;
-  bool finished_ = false;
-  bool collided_ = false;
-};
 
 TEST(SimMapping, ThirtyScansAlongADriveThroughTwoRooms) {
   std::string world;
@@ -202,7 +71,7 @@ TEST(SimMapping, ThirtyScansAlongADriveThroughTwoRooms) {
       buffer.lookupTransform("base_link", "laser", ros::Time(0)).transform, mount))
       << "the simulated laser is upright";
 
-  SimDrive drive;
+  wheelchair_test_drive::SimDrive drive(kRoute, kFinalYaw);
   const ros::WallTime start = ros::WallTime::now();
   while (ros::ok() && !drive.done() && !drive.collided() && drive.simSeconds() < kDriveLimit) {
     ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.01));  // waits, no polling

@@ -1,6 +1,7 @@
 // rostest: two planner hosts load the harmonic and the OMPL plugin by name, plan on a published
 // map from tf map->base_link (make_plan service and /move_base_simple/goal) and replan when the
-// map changes; a goal it rejects stops the chair (empty /plan).
+// map changes; a goal it rejects stops the chair (empty /plan); a plan request uses the map plus
+// the live obstacle layer (/obstacles).
 #include <wheelchair_msgs/MakePlan.h>
 #include <wheelchair_msgs/PlanCertificate.h>
 #include <wheelchair_planner_test/maze.h>
@@ -131,6 +132,34 @@ TEST(PlannerHost, BothPluginsPlanOnAPublishedMapAndReplanWhenItChanges) {
   ASSERT_TRUE(waitFor([&] { return cert && !cert->success; }, 10.0));
   EXPECT_NE(cert->failure_reason.find("frame 'odom'"), std::string::npos) << cert->failure_reason;
   EXPECT_TRUE(waitFor([&] { return plan->poses.empty(); }, 5.0)) << "the old path was kept";
+}
+
+// /obstacles (the obstacle layer) closes the corridor where /map is free: make_plan fails with
+// the reason; the layer cleared, the same request is planned again. (Fails on the old host: it
+// did not read /obstacles.)
+TEST(PlannerHost, APlanRequestUsesTheMapPlusTheObstacleLayer) {
+  ros::NodeHandle nh;
+  const auto map = wheelchair_planner::makeCorridor(6.0, 1.4, 0.05);
+  ros::Publisher map_pub = nh.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
+  ros::Publisher obstacles_pub = nh.advertise<nav_msgs::OccupancyGrid>("obstacles", 1, true);
+  map_pub.publish(wheelchair_ros::toOccupancyGrid(map, "map", ros::Time::now()));
+  MakePlan srv;
+  srv.request.goal = pose(5.0, 0.8);
+  const auto plans = [&] {
+    return ros::service::call("harmonic_host/make_plan", srv) && srv.response.success;
+  };
+  ASSERT_TRUE(waitFor(plans, 15.0)) << srv.response.reason;
+  wheelchair_core::OccupancyMap layer = map;
+  layer.data.assign(map.data.size(), wheelchair_core::kUnknown);
+  for (int iy = 0; iy < map.height; ++iy)  // a 0.4 m x 1.5 m block across at x = 2.8-3.2 m
+    for (int ix = 56; ix < 64; ++ix) layer.at(ix, iy) = wheelchair_core::kOccupied;
+  obstacles_pub.publish(wheelchair_ros::toOccupancyGrid(layer, "map", ros::Time::now()));
+  ASSERT_TRUE(waitFor([&] { return !plans(); }, 10.0)) << "planned through the obstacle layer";
+  EXPECT_NE(srv.response.reason.find("not connected"), std::string::npos) << srv.response.reason;
+  EXPECT_TRUE(srv.response.plan.poses.empty());
+  layer.data.assign(map.data.size(), wheelchair_core::kUnknown);  // the block went away
+  obstacles_pub.publish(wheelchair_ros::toOccupancyGrid(layer, "map", ros::Time::now()));
+  EXPECT_TRUE(waitFor(plans, 10.0)) << srv.response.reason;
 }
 
 int main(int argc, char** argv) {

@@ -30,6 +30,7 @@ NODES = [
                                      "_initial_y:=2.2"], ["/simulator"]),
     ("wheelchair_safety", "safety", [], ["/safety"]),
     ("wheelchair_hmi", "hmi", [f"_places_file:={WORLDS}/flat.places.yaml"], ["/hmi"]),
+    ("wheelchair_slam", "slam_node", [], ["/slam_node"]),
     ("wheelchair_bringup", "wheelchair", [f"{CONFIG}/bringup_minimal.yaml"], ["/wheelchair"]),
 ]
 
@@ -50,6 +51,8 @@ def _missing_home_config():
 REFUSED = [
     ("wheelchair_safety", "safety", ["_scan_timout:=0.5"], "unknown parameter 'scan_timout'"),
     ("wheelchair_safety", "safety", ["_scan_timeout:=0.0"], "scan_timeout must be positive"),
+    ("wheelchair_slam", "slam_node", ["_map_perod:=2.0"], "unknown parameter 'map_perod'"),
+    ("wheelchair_slam", "slam_node", ["_continue_dir:=/nonexistent/map"], "/nonexistent/map"),
     ("wheelchair_hmi", "hmi", [f"_places_file:={WORLDS}/flat.places.yaml", "_frame_id:=map"],
      "'frame_id' is now called 'map_frame'"),
     ("wheelchair_hmi", "hmi", ["_places_file:=/nonexistent/places.yaml"],
@@ -58,6 +61,9 @@ REFUSED = [
      "/hmi/places_file: cannot read '/nonexistent/home/places.yaml'"),
     ("wheelchair_bringup", "wheelchair", [f"{CONFIG}/bringup_minimal.yaml", "_hmii/scan_interval:=1.0"],
      "override ~hmii/scan_interval names no nodelet"),
+    # a bare file name is one of wheelchair_bringup's configs (mapping.yaml has no hmi)
+    ("wheelchair_bringup", "wheelchair", ["mapping.yaml", "_hmi/scan_interval:=1.0"],
+     "override ~hmi/scan_interval names no nodelet"),
 ]
 STARTUP = 30.0  # [s] on a loaded 2-core machine
 

@@ -12,6 +12,7 @@
 #include <ros/ros.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -100,9 +101,11 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "wheelchair");
   std::vector<std::string> args;
   ros::removeROSArgs(argc, argv, args);
-  const std::string config_path =
-      args.size() > 1 ? args[1]
-                      : ros::package::getPath("wheelchair_bringup") + "/config/chair_sim.yaml";
+  const std::string config_dir = ros::package::getPath("wheelchair_bringup") + "/config/";
+  std::string config_path = args.size() > 1 ? args[1] : config_dir + "chair_sim.yaml";
+  // A bare name that is not a file here is one of this package's (`wheelchair mapping.yaml`).
+  if (config_path.find('/') == std::string::npos && !std::ifstream(config_path))
+    config_path = config_dir + config_path;
   wheelchair_bringup::BringupConfig config;
   try {
     config = wheelchair_bringup::loadBringupConfig(config_path, &ros::package::getPath);

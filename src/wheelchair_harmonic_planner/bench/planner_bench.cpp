@@ -277,10 +277,86 @@ void newGoalAndReplan(const wheelchair_core::OccupancyMap& map, const ConfigSpac
   emit("harmonic_replan", "solver_iterations", cert.solver_iterations, "solves+sweeps");
 }
 
+/// The live obstacle layer's case: an obstacle of 1 m x 1 m (the largest) appears off
+/// the current route (on the free cell nearest the map centre at least 1.5 m from it) and the
+/// planner replans to the same goal: through updateMap (the C-space window and the factor
+/// columns it reaches recomputed, harmonic_obstacle_replan) and, on a second planner with the same
+/// history, through setMap (a new C-space and factorization, harmonic_obstacle_replan_setmap:
+/// the path before updateMap existed).
+void obstacleReplan(const wheelchair_core::OccupancyMap& map, const ConfigSpace& cs,
+                    const PlannerSettings& settings, const Pose2D& start, const Pose2D& goal) {
+  HarmonicPlanner fast, full;
+  std::vector<Pose2D> route, plan;
+  Certificate cert;
+  for (HarmonicPlanner* p : {&fast, &full}) {
+    p->configure(settings, HarmonicPlannerConfig());
+    p->setMap(map);
+    p->makePlan(start, goal, route, cert);
+  }
+  const int reach = static_cast<int>(std::ceil(1.5 / cs.resolution()));
+  std::vector<uint8_t> near_route(static_cast<size_t>(cs.width()) * cs.height(), 0);
+  std::vector<Pose2D> keep_off = route;
+  keep_off.push_back(start);
+  keep_off.push_back(goal);
+  for (const Pose2D& p : keep_off) {
+    int px, py;
+    cs.worldToCell(p.x, p.y, px, py);
+    for (int iy = std::max(0, py - reach); iy < std::min(cs.height(), py + reach + 1); ++iy)
+      for (int ix = std::max(0, px - reach); ix < std::min(cs.width(), px + reach + 1); ++ix)
+        if ((ix - px) * (ix - px) + (iy - py) * (iy - py) <= reach * reach)
+          near_route[cs.index(ix, iy)] = 1;
+  }
+  long best = -1;
+  double best_d = INFINITY;
+  for (int iy = 0; iy < cs.height(); ++iy)
+    for (int ix = 0; ix < cs.width(); ++ix) {
+      const double d = std::hypot(ix - cs.width() / 2.0, iy - cs.height() / 2.0);
+      if (cs.isFree(ix, iy) && !near_route[cs.index(ix, iy)] && d < best_d) {
+        best_d = d;
+        best = static_cast<long>(cs.index(ix, iy));
+      }
+    }
+  if (best < 0) return;
+  const int side = static_cast<int>(std::lround(1.0 / cs.resolution()));
+  const int bx = static_cast<int>(best % cs.width()) - side / 2;
+  const int by = static_cast<int>(best / cs.width()) - side / 2;
+  wheelchair_core::OccupancyMap changed = map;
+  for (int iy = std::max(0, by); iy < std::min(map.height, by + side); ++iy)
+    for (int ix = std::max(0, bx); ix < std::min(map.width, bx + side); ++ix)
+      changed.at(ix, iy) = wheelchair_core::kOccupied;
+  const int factorizations = fast.factorCache().factorizations;
+  double cpu0 = cpuSeconds();
+  auto t0 = std::chrono::steady_clock::now();
+  fast.updateMap(changed);
+  const double update_ms = seconds(t0) * 1e3, update_cpu_ms = (cpuSeconds() - cpu0) * 1e3;
+  const double plan_cpu0 = cpuSeconds();
+  bool ok = fast.makePlan(start, goal, plan, cert);
+  const double plan_cpu_ms = (cpuSeconds() - plan_cpu0) * 1e3;
+  const std::string m = "harmonic_obstacle_replan";
+  emit(m, "success", ok ? 1.0 : 0.0, "bool");
+  emit(m, "time", seconds(t0) * 1e3, "ms");
+  emit(m, "cpu_time", (cpuSeconds() - cpu0) * 1e3, "ms");
+  emit(m, "update_time", update_ms, "ms");
+  emit(m, "update_cpu_time", update_cpu_ms, "ms");
+  emit(m, "plan_cpu_time", plan_cpu_ms, "ms");  // solve + descent + footprint gate
+  emit(m, "footprint_repaired", cert.path_stage == "footprint_search" ? 1.0 : 0.0, "bool");
+  emit(m, "factor_columns_updated", static_cast<double>(fast.factorCache().updated_columns),
+       "columns");
+  emit(m, "factorizations", fast.factorCache().factorizations - factorizations, "count");
+  emit(m, "obstacle_area", side * side * cs.resolution() * cs.resolution(), "m^2");
+  cpu0 = cpuSeconds();
+  t0 = std::chrono::steady_clock::now();
+  full.setMap(changed);
+  ok = full.makePlan(start, goal, plan, cert);
+  emit(m + "_setmap", "success", ok ? 1.0 : 0.0, "bool");
+  emit(m + "_setmap", "time", seconds(t0) * 1e3, "ms");
+  emit(m + "_setmap", "cpu_time", (cpuSeconds() - cpu0) * 1e3, "ms");
+}
+
 }  // namespace
 
 // Usage: planner_bench CASE (world.yaml | mazeN) SX SY GX GY [png|-] [jacobi_max_sweeps]
-//        [sor_max_sweeps] [rate]
+//        [sor_max_sweeps] [rate | replan]   (replan: only the obstacle replan case)
 int main(int argc, char** argv) {
   if (argc < 6) {
     fprintf(stderr, "usage: planner_bench <world.yaml|mazeN> sx sy gx gy [out.png] [jacobi]\n");
@@ -307,6 +383,10 @@ int main(int argc, char** argv) {
   emit("harmonic", "cspace_cpu_time", (cpuSeconds() - cspace_cpu0) * 1e3, "ms");
   const double shortest = gridShortest(cs, start, goal);
   emit("grid_dijkstra", "length", shortest, "m");
+  if (argc > 9 && std::string(argv[9]) == "replan") {
+    obstacleReplan(map, cs, settings, start, goal);
+    return 0;
+  }
   std::vector<std::pair<std::string, std::vector<Pose2D>>> drawn;
   fprintf(stderr, "start %.2f %.2f %.2f goal %.2f %.2f %.2f\n", start.x, start.y, start.yaw, goal.x,
           goal.y, goal.yaw);
@@ -348,6 +428,7 @@ int main(int argc, char** argv) {
     if (solver == "direct" && !rate_only) {
       solveColdAndWarm(cs, start, goal);
       newGoalAndReplan(map, cs, settings, start, goal);
+      obstacleReplan(map, cs, settings, start, goal);
     }
   }
   pluginlib::ClassLoader<GlobalPlanner> loader("wheelchair_planner",

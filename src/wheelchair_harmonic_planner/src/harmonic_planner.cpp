@@ -62,6 +62,19 @@ void HarmonicPlanner::setMap(const wheelchair_core::OccupancyMap& map) {
     prepareHarmonicFactor(map_->cspace(), config_.solver_params, factor_cache_);
 }
 
+void HarmonicPlanner::updateMap(const wheelchair_core::OccupancyMap& map) {
+  if (!map_ || map.width != map_geometry_.width || map.height != map_geometry_.height ||
+      map.resolution != map_geometry_.resolution || map.origin_x != map_geometry_.origin_x ||
+      map.origin_y != map_geometry_.origin_y || map.origin_yaw != map_geometry_.origin_yaw) {
+    setMap(map);
+    return;
+  }
+  const wheelchair_planner::ConfigSpaceChange change = map_->update(map);
+  if (!change.rebuilt && change.cells.empty()) return;  // nothing the plan depends on changed
+  updateHarmonicFactor(map_->cspace(), change, config_.solver_params, factor_cache_);
+  solution_current_ = false;  // the previous solution stays as a warm start
+}
+
 bool HarmonicPlanner::makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
                                Certificate& cert) {
   const auto t0 = std::chrono::steady_clock::now();

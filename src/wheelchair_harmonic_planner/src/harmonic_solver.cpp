@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <stdexcept>
 
 namespace wheelchair_harmonic_planner {
@@ -123,16 +124,17 @@ void solveSor(const ConfigSpace& cs, const Stencil& stencil, const HarmonicSolve
 std::shared_ptr<const LogLdlt> directFactor(const ConfigSpace& cs,
                                             const HarmonicSolverParams& params,
                                             HarmonicFactorCache* cache, bool& reused) {
-  reused = cache && cache->factor && cache->cspace == &cs &&
+  reused = cache && cache->factor && cache->cspace == &cs && cache->revision == cs.revision() &&
            cache->use_conductance == params.use_conductance;
   if (reused) return cache->factor;
-  auto factor = std::make_shared<const LogLdlt>(cs, params.use_conductance,
-                                                cache ? cache->ordering.get() : nullptr);
+  auto factor = std::make_shared<LogLdlt>(cs, params.use_conductance,
+                                          cache ? cache->ordering.get() : nullptr);
   if (cache) {
     if (!factor->orderingReused()) cache->ordering = factor->ordering(cs);
     cache->orderings_reused += factor->orderingReused() ? 1 : 0;
     cache->factor = factor;
     cache->cspace = &cs;
+    cache->revision = cs.revision();
     cache->use_conductance = params.use_conductance;
     cache->timing = factor->timing();
     ++cache->factorizations;
@@ -158,6 +160,28 @@ void solveDirect(const ConfigSpace& cs, const Stencil& stencil, const HarmonicSo
 }
 
 }  // namespace
+
+bool updateHarmonicFactor(const ConfigSpace& cs, const ConfigSpaceChange& change,
+                          const HarmonicSolverParams& params, HarmonicFactorCache& cache) {
+  if (params.method != HarmonicSolverParams::Method::kDirect) return false;
+  if (!cache.factor || cache.cspace != &cs || cache.use_conductance != params.use_conductance) {
+    cache.reset();
+    return false;
+  }
+  if (cache.revision == cs.revision()) return true;  // nothing changed
+  const std::clock_t cpu0 = std::clock();
+  const bool updated = !change.rebuilt && cache.revision + 1 == cs.revision() &&
+                       cache.factor->update(cs, change.cells);
+  if (!updated) {
+    cache.reset();
+    return false;
+  }
+  cache.revision = cs.revision();
+  ++cache.factor_updates;
+  cache.updated_columns = cache.factor->updatedColumns();
+  cache.update_cpu_time = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  return true;
+}
 
 bool prepareHarmonicFactor(const ConfigSpace& cs, const HarmonicSolverParams& params,
                            HarmonicFactorCache& factor_cache) {

@@ -55,7 +55,7 @@ void accumulate(double c, long b, ScaledValue& acc) {
 }  // namespace
 
 LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance, const FactorOrdering* previous)
-    : width_(cs.width()) {
+    : width_(cs.width()), use_conductance_(use_conductance) {
   double t0 = cpuSeconds();
   recycleLargeCholmodBlocks();
   cholmod_start(&common_);
@@ -68,37 +68,23 @@ LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance, const FactorOrderi
   }
   const int n = static_cast<int>(cells_.size());
   if (n == 0) return;
-  auto sigma = [&](size_t k) {
-    return use_conductance
-               ? cs.conductance(static_cast<int>(k % width_), static_cast<int>(k / width_))
-               : 1.0;
-  };
   // Column c of the lower triangle: the diagonal, then the east (c + 1) and north neighbours
   // (unknowns are numbered row by row, so both have larger numbers): rows already sorted.
   ap_.resize(n + 1);
   ai_.resize(3 * static_cast<size_t>(n));
   ax_.resize(3 * static_cast<size_t>(n));
   int nz = 0;
-  const long offsets[4] = {1, width_, -1, -width_};
   for (int c = 0; c < n; ++c) {
     const size_t k = cells_[c];
     ap_[c] = nz;
-    const int diag = nz++;
-    double total = 0.0;
-    for (int d = 0; d < 4; ++d) {
-      const size_t nb = static_cast<size_t>(static_cast<long>(k) + offsets[d]);
-      const bool neighbour_free = id_[nb] >= 0;
-      const double edge = 0.5 * (sigma(k) + (neighbour_free ? sigma(nb) : sigma(k)));
-      total += edge;
-      if (neighbour_free && d < 2) {
-        ai_[nz] = id_[nb];
-        ax_[nz++] = -edge;
-      }
+    ai_[nz++] = c;
+    for (const long offset : {1L, width_}) {
+      const int nb = id_[static_cast<size_t>(static_cast<long>(k) + offset)];
+      if (nb >= 0) ai_[nz++] = nb;
     }
-    ai_[diag] = c;
-    ax_[diag] = total;
   }
   ap_[n] = nz;
+  for (int c = 0; c < n; ++c) assembleColumn(cs, c, &ax_[ap_[c]]);
   cholmod_sparse a{};
   a.nrow = a.ncol = static_cast<size_t>(n);
   a.nzmax = static_cast<size_t>(nz);
@@ -154,6 +140,149 @@ LogLdlt::LogLdlt(const ConfigSpace& cs, bool use_conductance, const FactorOrderi
     ok_ = ok_ && lx[lp[j]] > 0.0;  // D > 0
     inverse_perm_[perm[j]] = j;
   }
+}
+
+void LogLdlt::assembleColumn(const ConfigSpace& cs, int c, double* values) const {
+  const size_t k = cells_[c];
+  const auto& free = cs.freeMask();
+  const auto sigma = [&](size_t cell) {
+    return use_conductance_
+               ? cs.conductance(static_cast<int>(cell % width_), static_cast<int>(cell / width_))
+               : 1.0;
+  };
+  const long offsets[4] = {1, width_, -1, -width_};
+  int out = 1;
+  if (!free[k]) {  // blocked since the factorization: u = 0 there, decoupled from its neighbours
+    values[0] = 1.0;
+    for (int d = 0; d < 2; ++d)
+      if (id_[static_cast<size_t>(static_cast<long>(k) + offsets[d])] >= 0) values[out++] = 0.0;
+    return;
+  }
+  double total = 0.0;
+  for (int d = 0; d < 4; ++d) {
+    const size_t nb = static_cast<size_t>(static_cast<long>(k) + offsets[d]);
+    const bool neighbour_free = free[nb] != 0;
+    const double edge = 0.5 * (sigma(k) + (neighbour_free ? sigma(nb) : sigma(k)));
+    total += edge;
+    if (d < 2 && id_[nb] >= 0) values[out++] = neighbour_free ? -edge : 0.0;
+  }
+  values[0] = total;
+}
+
+double LogLdlt::entry(int a, int b) const {
+  const int lo = std::min(a, b), hi = std::max(a, b);
+  for (int p = ap_[lo] + 1; p < ap_[lo + 1]; ++p)
+    if (ai_[p] == hi) return ax_[p];
+  return 0.0;
+}
+
+bool LogLdlt::update(const ConfigSpace& cs, const std::vector<size_t>& changed) {
+  updated_columns_ = 0;
+  if (!ok_ || cs.width() != width_ || cs.freeMask().size() != id_.size()) return false;
+  const auto& free = cs.freeMask();
+  for (const size_t k : changed)
+    if (free[k] && id_[k] < 0) return false;  // newly free: not in the factor's pattern
+  const long n = static_cast<long>(cells_.size());
+  const int* lp = static_cast<const int*>(factor_->p);
+  const int* li = static_cast<const int*>(factor_->i);
+  const int* lnz = static_cast<const int*>(factor_->nz);
+  if (parent_.empty()) {
+    column_.assign(n, 0.0);
+    mark_.assign(n, -1);
+    parent_.resize(n);
+    for (long j = 0; j < n; ++j) parent_[j] = lnz[j] > 1 ? li[lp[j] + 1] : -1;  // rows sorted
+  }
+  // The columns of A whose values change: the changed cells' and their neighbours'.
+  std::vector<int> touched;
+  for (const size_t k : changed) {
+    for (const long offset : {0L, 1L, -1L, width_, -width_}) {
+      const int u = id_[static_cast<size_t>(static_cast<long>(k) + offset)];
+      if (u >= 0) touched.push_back(u);
+    }
+  }
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  std::vector<long> rows;  // factor positions of the unknowns whose row of A changed
+  double values[3];
+  for (const int c : touched) {
+    const int count = ap_[c + 1] - ap_[c];
+    assembleColumn(cs, c, values);
+    for (int q = 0; q < count; ++q) {
+      double& a = ax_[ap_[c] + q];
+      if (a == values[q]) continue;
+      a = values[q];
+      rows.push_back(inverse_perm_[c]);
+      if (q > 0) rows.push_back(inverse_perm_[ai_[ap_[c] + q]]);
+    }
+  }
+  // The factor columns that depend on them: their ancestors in the elimination tree.
+  std::vector<long> columns;
+  for (long j : rows) {
+    for (; j >= 0 && mark_[j] != -2; j = parent_[j]) {
+      mark_[j] = -2;
+      columns.push_back(j);
+    }
+  }
+  for (const long j : columns) mark_[j] = -1;
+  std::sort(columns.begin(), columns.end());
+  for (const long j : columns) {
+    if (!refactorColumn(j)) {
+      ok_ = false;
+      return false;
+    }
+  }
+  updated_columns_ = columns.size();
+  return true;
+}
+
+bool LogLdlt::refactorColumn(long j) {
+  const int* perm = static_cast<const int*>(factor_->Perm);
+  const int* lp = static_cast<const int*>(factor_->p);
+  const int* li = static_cast<const int*>(factor_->i);
+  const int* lnz = static_cast<const int*>(factor_->nz);
+  double* lx = static_cast<double*>(factor_->x);
+  const int u = perm[j];
+  const size_t k = cells_[u];
+  // Column j of P A P^T from row j down, and the pattern of row j of L: the elimination-tree
+  // paths from the rows above j of that column up to j.
+  column_[j] = ax_[ap_[u]];
+  row_.clear();
+  for (const long offset : {1L, -1L, width_, -width_}) {
+    const int v = id_[static_cast<size_t>(static_cast<long>(k) + offset)];
+    if (v < 0) continue;
+    long p = inverse_perm_[v];
+    if (p > j) {
+      column_[p] = entry(u, v);
+      continue;
+    }
+    for (; p >= 0 && p < j && mark_[p] != j; p = parent_[p]) {
+      mark_[p] = static_cast<int>(j);
+      row_.push_back(p);
+    }
+  }
+  // Left-looking: subtract L_.d D_d L_jd, from row j down, for every column d of row j.
+  bool found = true;
+  for (const long d : row_) {
+    mark_[d] = -1;
+    const int* begin = li + lp[d] + 1;
+    const int* end = li + lp[d] + lnz[d];
+    const int* at = std::lower_bound(begin, end, static_cast<int>(j));
+    if (at == end || *at != j) {
+      found = false;  // not in the symbolic pattern: not expected
+      continue;
+    }
+    const long q = at - li;
+    const double f = lx[q] * lx[lp[d]];
+    for (long r = q; r < lp[d] + lnz[d]; ++r) column_[li[r]] -= lx[r] * f;  // from row j: D_j too
+  }
+  const double dj = column_[j];
+  column_[j] = 0.0;
+  lx[lp[j]] = dj;
+  for (long r = lp[j] + 1; r < lp[j] + lnz[j]; ++r) {
+    lx[r] = column_[li[r]] / dj;
+    column_[li[r]] = 0.0;
+  }
+  return found && dj > 0.0;
 }
 
 LogLdlt::~LogLdlt() {
@@ -245,6 +374,7 @@ double LogLdlt::residual(size_t goal) const {
     if (uc.m == 0.0) continue;
     const double total_c = ax_[ap_[c]];  // the diagonal comes first
     for (int p = ap_[c] + 1; p < ap_[c + 1]; ++p) {
+      if (ax_[p] == 0.0) continue;  // an edge to a cell blocked since the factorization
       const int r = ai_[p];
       // u_r / u_c: between edge / total and total / edge (maximum principle), no overflow.
       const ScaledValue& ur = u(r);

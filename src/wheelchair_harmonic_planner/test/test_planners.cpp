@@ -4,6 +4,7 @@
 #include <wheelchair_description_testing/chair_file.h>
 #include <wheelchair_harmonic_planner/harmonic_planner.h>
 #include <wheelchair_planner/path_metrics.h>
+#include <wheelchair_planner/planning_map.h>
 #include <wheelchair_planner_test/maze.h>
 #include <wheelchair_planner_test/planner_contract.h>
 
@@ -130,4 +131,119 @@ TEST(HarmonicPlanner, ReadsItsKeysAndRefusesBadValuesAndTheRemovedMultigridSolve
   EXPECT_NE(refusal("{algorithm: RRTstar}").find("unknown parameter 'algorithm'"),
             std::string::npos)
       << "another plugin's key";
+}
+
+// ---- Map changes: the live obstacle layer over the static map (updateMap) -----------------
+
+namespace {
+
+/// 9 m x 5 m, two rooms split by a wall at x = 4.4-4.6 m with a 1 m door near the bottom
+/// (y 0.8-1.8) and one near the top (y 3.2-4.2).
+wheelchair_core::OccupancyMap twoDoorRooms() {
+  wheelchair_core::OccupancyMap m;
+  m.resolution = 0.05;
+  m.width = 180;
+  m.height = 100;
+  m.data.assign(static_cast<size_t>(m.width) * m.height, wheelchair_core::kFree);
+  for (int iy = 0; iy < m.height; ++iy) {
+    for (int ix = 0; ix < m.width; ++ix) {
+      double x, y;
+      m.cellToWorld(ix, iy, x, y);
+      const bool border = x < 0.1 || y < 0.1 || x > 8.9 || y > 4.9;
+      const bool wall = x > 4.4 && x < 4.6 && !(y > 0.8 && y < 1.8) && !(y > 3.2 && y < 4.2);
+      if (border || wall) m.at(ix, iy) = wheelchair_core::kOccupied;
+    }
+  }
+  return m;
+}
+
+/// An obstacle layer on `m`'s grid with the box [x0, x1] x [y0, y1] occupied.
+wheelchair_core::OccupancyMap layerWithBox(const wheelchair_core::OccupancyMap& m, double x0,
+                                           double y0, double x1, double y1,
+                                           wheelchair_core::OccupancyMap layer = {}) {
+  if (layer.data.empty()) {
+    layer = m;
+    layer.data.assign(m.data.size(), wheelchair_core::kUnknown);
+  }
+  for (int iy = 0; iy < m.height; ++iy) {
+    for (int ix = 0; ix < m.width; ++ix) {
+      double x, y;
+      m.cellToWorld(ix, iy, x, y);
+      if (x >= x0 && x <= x1 && y >= y0 && y <= y1) layer.at(ix, iy) = wheelchair_core::kOccupied;
+    }
+  }
+  return layer;
+}
+
+/// Heights at which the plan crosses the dividing wall (x 4.4-4.6).
+std::vector<double> wallCrossings(const std::vector<Pose2D>& plan) {
+  std::vector<double> ys;
+  for (const Pose2D& p : plan)
+    if (p.x > 4.4 && p.x < 4.6) ys.push_back(p.y);
+  return ys;
+}
+
+double pathLength(const std::vector<Pose2D>& plan) {
+  double length = 0.0;
+  for (size_t i = 1; i < plan.size(); ++i)
+    length += std::hypot(plan[i].x - plan[i - 1].x, plan[i].y - plan[i - 1].y);
+  return length;
+}
+
+}  // namespace
+
+// The bottom door blocked by something the map does not have (a 0.6 m x 0.6 m box in the
+// doorway, as the obstacle layer reports it), the top door free: the plan goes through the top
+// door, found on the adapted factorization (no new one); the box gone, the plan goes through the
+// bottom door again, as long as before; both doors blocked: no plan, with a reason.
+TEST(HarmonicPlanner, ReplansThroughTheFreeDoorWhenTheObstacleLayerBlocksTheOther) {
+  const wheelchair_core::OccupancyMap map = twoDoorRooms();
+  HarmonicPlanner planner;
+  planner.configure(chairSettings(), HarmonicPlannerConfig());
+  planner.setMap(map);
+  const Pose2D start{2.0, 1.3, 0.0}, goal{7.0, 1.3, 0.0};
+  std::vector<Pose2D> plan;
+  Certificate cert;
+  ASSERT_TRUE(planner.makePlan(start, goal, plan, cert)) << cert.failure_reason;
+  for (const double y : wallCrossings(plan)) EXPECT_TRUE(y > 0.8 && y < 1.8) << y;
+  ASSERT_FALSE(wallCrossings(plan).empty());
+  const double direct = pathLength(plan);
+  EXPECT_EQ(planner.factorCache().factorizations, 1);
+
+  const auto bottom_blocked = layerWithBox(map, 4.2, 1.0, 4.8, 1.6);
+  planner.updateMap(wheelchair_planner::withObstacles(map, bottom_blocked));
+  ASSERT_TRUE(planner.makePlan(start, goal, plan, cert)) << cert.failure_reason;
+  ASSERT_FALSE(wallCrossings(plan).empty());
+  for (const double y : wallCrossings(plan)) EXPECT_TRUE(y > 3.2 && y < 4.2) << y;
+  EXPECT_GT(pathLength(plan), direct + 3.0);  // up to the top door and back down: ~2 x 2.4 m
+  EXPECT_EQ(planner.factorCache().factorizations, 1) << "the map change needed a factorization";
+  EXPECT_EQ(planner.factorCache().factor_updates, 1);
+
+  planner.updateMap(map);  // the box was taken away
+  ASSERT_TRUE(planner.makePlan(start, goal, plan, cert)) << cert.failure_reason;
+  for (const double y : wallCrossings(plan)) EXPECT_TRUE(y > 0.8 && y < 1.8) << y;
+  EXPECT_NEAR(pathLength(plan), direct, 0.01);
+  EXPECT_EQ(planner.factorCache().factorizations, 1);
+  EXPECT_EQ(planner.factorCache().factor_updates, 2);
+
+  planner.updateMap(wheelchair_planner::withObstacles(
+      map, layerWithBox(map, 4.2, 3.4, 4.8, 4.0, bottom_blocked)));
+  EXPECT_FALSE(planner.makePlan(start, goal, plan, cert));
+  EXPECT_FALSE(cert.failure_reason.empty());
+  EXPECT_TRUE(plan.empty());
+}
+
+// The layer adds obstacles and never frees a map cell; another grid is refused.
+TEST(HarmonicPlanner, TheObstacleLayerOnlyAddsObstaclesOnTheMapsOwnGrid) {
+  const wheelchair_core::OccupancyMap map = twoDoorRooms();
+  wheelchair_core::OccupancyMap layer = layerWithBox(map, 1.0, 1.0, 1.2, 1.2);
+  layer.at(0, 0) = wheelchair_core::kFree;  // a map wall the layer saw free
+  const auto merged = wheelchair_planner::withObstacles(map, layer);
+  for (size_t k = 0; k < map.data.size(); ++k) {
+    const int8_t expected =
+        layer.data[k] == wheelchair_core::kOccupied ? wheelchair_core::kOccupied : map.data[k];
+    ASSERT_EQ(merged.data[k], expected) << k;
+  }
+  layer.origin_x += 0.05;
+  EXPECT_THROW(wheelchair_planner::withObstacles(map, layer), std::invalid_argument);
 }

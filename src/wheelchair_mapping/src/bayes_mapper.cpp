@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -88,21 +87,9 @@ void BayesMapper::markFootprint(const wheelchair_core::Pose2D& pose, double angl
 InsertResult BayesMapper::insert(const wheelchair_core::LaserScan2D& scan,
                                  const wheelchair_core::Pose2D& pose) {
   InsertResult result;
-  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw)) {
-    result.reason = "sensor pose is not finite";
-    return result;
-  }
   result.reason =
-      wheelchair_core::scanGeometryProblem(scan, static_cast<size_t>(config_.expected_beams));
+      scanInsertProblem(scan, pose, static_cast<size_t>(config_.expected_beams), last_stamp_);
   if (!result.reason.empty()) return result;
-  if (scan.stamp < last_stamp_) {
-    std::ostringstream msg;
-    msg.precision(15);
-    msg << "time went backwards: scan at " << scan.stamp << " s after one at " << last_stamp_
-        << " s";
-    result.reason = msg.str();
-    return result;
-  }
   // Beam endpoints first: the grid must contain them all before any cell is touched.
   std::vector<BeamUse> uses(scan.ranges.size());
   double x_min = pose.x, x_max = pose.x, y_min = pose.y, y_max = pose.y;

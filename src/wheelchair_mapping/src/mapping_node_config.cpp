@@ -34,4 +34,22 @@ void readMapServerConfig(wheelchair_core::ConfigReader& r, MapServerConfig& c) {
   r.read("map_frame", c.map_frame);
 }
 
+std::string ObstacleLayerNodeConfig::validate() const {
+  const std::string layer_problem = layer.validate();
+  return wheelchair_core::ConfigChecks()
+      .check(layer_problem.empty(), layer_problem)
+      .check(!map_frame.empty(), "map_frame must be named")
+      .nonNegative("tf_timeout", tf_timeout)
+      .positive("publish_period", publish_period)
+      .result();
+}
+
+void readObstacleLayerNodeConfig(wheelchair_core::ConfigReader& r, ObstacleLayerNodeConfig& c) {
+  readObstacleLayerConfig(r, c.layer);
+  r.read("map_frame", c.map_frame);
+  r.read("tf_timeout", c.tf_timeout);
+  r.read("publish_period", c.publish_period);
+  r.read("require_localized", c.require_localized);
+}
+
 }  // namespace wheelchair_mapping

@@ -5,6 +5,7 @@
 
 #include <wheelchair_core/config.h>
 #include <wheelchair_mapping/mapper_config.h>
+#include <wheelchair_mapping/obstacle_layer.h>
 
 #include <string>
 
@@ -34,5 +35,21 @@ struct MapServerConfig {
 };
 
 void readMapServerConfig(wheelchair_core::ConfigReader& reader, MapServerConfig& config);
+
+/// The obstacle layer nodelet's parameters: the layer's and the node's own.
+struct ObstacleLayerNodeConfig {
+  ObstacleLayerConfig layer;
+  std::string map_frame = "map";  ///< frame of /map, where the laser pose is looked up
+  double tf_timeout = 0.1;        ///< [s] wait for the laser pose at a scan's stamp
+  double publish_period = 0.2;    ///< [s] /obstacles when it changed (the decay included)
+  /// Fuse scans only while /localization/status says localized (a guessed pose would put
+  /// obstacles where there are none); false for a pose from elsewhere (the simulator's truth).
+  bool require_localized = true;
+
+  std::string validate() const;
+};
+
+void readObstacleLayerNodeConfig(wheelchair_core::ConfigReader& reader,
+                                 ObstacleLayerNodeConfig& config);
 
 }  // namespace wheelchair_mapping

@@ -1,6 +1,8 @@
 #include <wheelchair_mapping/scan_checks.h>
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 
 namespace wheelchair_mapping {
 
@@ -32,6 +34,23 @@ BeamUse useOfBeam(float range, const wheelchair_core::LaserScan2D& scan,
       break;
   }
   return use;
+}
+
+std::string scanInsertProblem(const wheelchair_core::LaserScan2D& scan,
+                              const wheelchair_core::Pose2D& pose, size_t expected_beams,
+                              double last_stamp) {
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw))
+    return "sensor pose is not finite";
+  const std::string geometry = wheelchair_core::scanGeometryProblem(scan, expected_beams);
+  if (!geometry.empty()) return geometry;
+  if (scan.stamp < last_stamp) {
+    std::ostringstream msg;
+    msg.precision(15);
+    msg << "time went backwards: scan at " << scan.stamp << " s after one at " << last_stamp
+        << " s";
+    return msg.str();
+  }
+  return "";
 }
 
 }  // namespace wheelchair_mapping

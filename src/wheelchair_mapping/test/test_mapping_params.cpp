@@ -76,3 +76,42 @@ TEST(MappingParams, UnknownKeysAndInvalidValuesAreRefused) {
 
 }  // namespace
 }  // namespace wheelchair_mapping
+
+namespace wheelchair_mapping {
+namespace {
+
+TEST(ObstacleLayerParams, EveryKeyIsReadAndUnknownOrInvalidOnesAreRefused) {
+  EXPECT_EQ(ObstacleLayerNodeConfig().validate(), "");
+  const auto c = wheelchair_core::loadConfig<ObstacleLayerNodeConfig>(
+      YamlParameterSource(YAML::Load("{p_occ_hit: 0.75, p_occ_pass: 0.3, max_insertion_range: 6,"
+                                     " no_return_is_free: false, no_return_range: 4,"
+                                     " obstacle_probability: 0.7, max_probability: 0.95,"
+                                     " forget_time: 3, map_margin: 0.15, map_frame: world,"
+                                     " tf_timeout: 0.2, publish_period: 0.5,"
+                                     " require_localized: false}"),
+                          "test.yaml"),
+      readObstacleLayerNodeConfig);
+  EXPECT_DOUBLE_EQ(c.layer.model.p_occ_hit, 0.75);
+  EXPECT_DOUBLE_EQ(c.layer.model.p_occ_pass, 0.3);
+  EXPECT_DOUBLE_EQ(c.layer.model.max_insertion_range, 6.0);
+  EXPECT_FALSE(c.layer.model.no_return_is_free);
+  EXPECT_DOUBLE_EQ(c.layer.model.no_return_range, 4.0);
+  EXPECT_DOUBLE_EQ(c.layer.obstacle_probability, 0.7);
+  EXPECT_DOUBLE_EQ(c.layer.max_probability, 0.95);
+  EXPECT_DOUBLE_EQ(c.layer.forget_time, 3.0);
+  EXPECT_DOUBLE_EQ(c.layer.map_margin, 0.15);
+  EXPECT_EQ(c.map_frame, "world");
+  EXPECT_DOUBLE_EQ(c.tf_timeout, 0.2);
+  EXPECT_DOUBLE_EQ(c.publish_period, 0.5);
+  EXPECT_FALSE(c.require_localized);
+  const std::string unknown =
+      errorOf<ObstacleLayerNodeConfig>("{decay: 3}", readObstacleLayerNodeConfig);
+  EXPECT_NE(unknown.find("decay"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("forget_time"), std::string::npos) << unknown;
+  const std::string invalid =
+      errorOf<ObstacleLayerNodeConfig>("{forget_time: 0}", readObstacleLayerNodeConfig);
+  EXPECT_NE(invalid.find("forget_time"), std::string::npos) << invalid;
+}
+
+}  // namespace
+}  // namespace wheelchair_mapping

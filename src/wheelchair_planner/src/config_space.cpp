@@ -54,44 +54,123 @@ ConfigSpace::ConfigSpace(const wheelchair_core::OccupancyMap& map, const ConfigS
   if (!std::isfinite(map.origin_x) || !std::isfinite(map.origin_y) || map.origin_yaw != 0.0) {
     throw std::invalid_argument("ConfigSpace: map origin must be finite with zero yaw");
   }
-  // Obstacle image padded by one blocked cell on every side: outside the map is an obstacle.
-  cv::Mat passable(height_ + 2, width_ + 2, CV_8UC1, cv::Scalar(0));
-  for (int iy = 0; iy < height_; ++iy) {
-    auto* row = passable.ptr<uint8_t>(iy + 1);
-    for (int ix = 0; ix < width_; ++ix) {
-      const int v = map.at(ix, iy);
-      const bool obstacle = v >= params.occupied_threshold || (v < 0 && params.unknown_is_obstacle);
-      row[ix + 1] = obstacle ? 0 : 255;
+  const size_t n = static_cast<size_t>(width_) * height_;
+  obstacle_.resize(n);
+  for (size_t k = 0; k < n; ++k) obstacle_[k] = isObstacleValue(map.data[k]) ? 1 : 0;
+  free_.assign(n, 0);
+  distance_.assign(n, 0.0f);
+  conductance_.assign(n, 0.0f);
+  // The whole grid padded by one blocked cell on every side: outside the map is an obstacle.
+  const std::vector<float> dist = transform(map, -1, -1, width_ + 1, height_ + 1);
+  max_transform_ = dist.empty() ? 0.0f : *std::max_element(dist.begin(), dist.end());
+  setCells(dist, width_ + 2, -1, -1, 0, 0, width_, height_, nullptr);
+}
+
+ConfigSpaceChange ConfigSpace::update(const wheelchair_core::OccupancyMap& map) {
+  ConfigSpaceChange change;
+  if (map.width != width_ || map.height != height_ || map.resolution != resolution_ ||
+      map.origin_x != origin_x_ || map.origin_y != origin_y_ || map.origin_yaw != 0.0 ||
+      map.data.size() != obstacle_.size()) {
+    const int revision = revision_;
+    *this = ConfigSpace(map, params_);
+    revision_ = revision + 1;
+    change.rebuilt = true;
+    return change;
+  }
+  // The cells whose obstacle state changed, and their bounding box.
+  int bx0 = width_, by0 = height_, bx1 = -1, by1 = -1;
+  for (size_t k = 0; k < obstacle_.size(); ++k) {
+    if ((isObstacleValue(map.data[k]) ? 1 : 0) == obstacle_[k]) continue;
+    const int ix = static_cast<int>(k % width_), iy = static_cast<int>(k / width_);
+    bx0 = std::min(bx0, ix);
+    bx1 = std::max(bx1, ix);
+    by0 = std::min(by0, iy);
+    by1 = std::max(by1, iy);
+  }
+  if (bx1 < 0) return change;
+  // A cell farther than the largest transform value R from every changed cell keeps its nearest
+  // obstacle, so only the window W (the changed box grown by R) can change; there the transform
+  // of W grown by R again is exact wherever it is at most R (an obstacle outside it is farther).
+  const int margin = static_cast<int>(std::ceil(max_transform_)) + 1;
+  const int x0 = std::max(0, bx0 - margin), x1 = std::min(width_, bx1 + 1 + margin);
+  const int y0 = std::max(0, by0 - margin), y1 = std::min(height_, by1 + 1 + margin);
+  const int qx0 = std::max(-1, x0 - margin), qx1 = std::min(width_ + 1, x1 + margin);
+  const int qy0 = std::max(-1, y0 - margin), qy1 = std::min(height_ + 1, y1 + margin);
+  const std::vector<float> dist = transform(map, qx0, qy0, qx1, qy1);
+  const int stride = qx1 - qx0;
+  for (int iy = y0; iy < y1; ++iy) {
+    for (int ix = x0; ix < x1; ++ix) {
+      if (dist[static_cast<size_t>(iy - qy0) * stride + (ix - qx0)] > max_transform_) {
+        // A removed obstacle left space farther from every obstacle than before: the bound no
+        // longer holds, start again.
+        const int revision = revision_;
+        *this = ConfigSpace(map, params_);
+        revision_ = revision + 1;
+        change.rebuilt = true;
+        return change;
+      }
     }
+  }
+  for (int iy = by0; iy <= by1; ++iy)
+    for (int ix = bx0; ix <= bx1; ++ix) obstacle_[index(ix, iy)] = isObstacleValue(map.at(ix, iy));
+  setCells(dist, stride, qx0, qy0, x0, y0, x1, y1, &change.cells);
+  std::sort(change.cells.begin(), change.cells.end());
+  change.x0 = x0;
+  change.y0 = y0;
+  change.x1 = x1;
+  change.y1 = y1;
+  ++revision_;
+  return change;
+}
+
+bool ConfigSpace::isObstacleValue(int8_t v) const {
+  return v >= params_.occupied_threshold || (v < 0 && params_.unknown_is_obstacle);
+}
+
+std::vector<float> ConfigSpace::transform(const wheelchair_core::OccupancyMap& map, int x0, int y0,
+                                          int x1, int y1) const {
+  cv::Mat passable(y1 - y0, x1 - x0, CV_8UC1, cv::Scalar(0));
+  for (int iy = std::max(0, y0); iy < std::min(height_, y1); ++iy) {
+    auto* row = passable.ptr<uint8_t>(iy - y0);
+    for (int ix = std::max(0, x0); ix < std::min(width_, x1); ++ix)
+      row[ix - x0] = isObstacleValue(map.at(ix, iy)) ? 0 : 255;
   }
   // Exact Euclidean distance to the nearest obstacle cell centre: thresholding it is the
   // dilation of the obstacles by a disc (the C-space), and it also gives the clearance.
   cv::Mat dist;
   cv::distanceTransform(passable, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
-  const size_t n = static_cast<size_t>(width_) * height_;
-  free_.assign(n, 0);
-  distance_.assign(n, 0.0f);
-  conductance_.assign(n, 0.0f);
-  const double hard = params.inscribed_radius + params.min_clearance;
-  const double band_width = params.clearance_band - params.min_clearance;
-  for (int iy = 0; iy < height_; ++iy) {
-    const float* drow = dist.ptr<float>(iy + 1);
-    for (int ix = 0; ix < width_; ++ix) {
+  std::vector<float> out(static_cast<size_t>(dist.rows) * dist.cols);
+  for (int r = 0; r < dist.rows; ++r)
+    std::copy(dist.ptr<float>(r), dist.ptr<float>(r) + dist.cols,
+              out.begin() + static_cast<long>(r) * dist.cols);
+  return out;
+}
+
+void ConfigSpace::setCells(const std::vector<float>& dist, int stride, int dx0, int dy0, int x0,
+                           int y0, int x1, int y1, std::vector<size_t>* changed) {
+  const double hard = params_.inscribed_radius + params_.min_clearance;
+  const double band_width = params_.clearance_band - params_.min_clearance;
+  for (int iy = y0; iy < y1; ++iy) {
+    const float* drow = &dist[static_cast<size_t>(iy - dy0) * stride - dx0];
+    for (int ix = x0; ix < x1; ++ix) {
       // The obstacle cell's edge is half a cell closer than its centre.
-      const double d = std::max(0.0, (drow[ix + 1] - 0.5) * resolution_);
+      const double d = std::max(0.0, (drow[ix] - 0.5) * resolution_);
       const size_t k = index(ix, iy);
       distance_[k] = static_cast<float>(d);
+      uint8_t free = 0;
+      float conductance = 0.0f;
       if (d > hard) {
-        free_[k] = 1;
+        // Keep the outermost ring blocked so that neighbour lookups never leave the grid.
+        free = ix == 0 || iy == 0 || ix == width_ - 1 || iy == height_ - 1 ? 0 : 1;
         const double s = band_width > 0.0 ? smoothstep((d - hard) / band_width) : 1.0;
-        conductance_[k] =
-            static_cast<float>(params.band_conductance + (1.0 - params.band_conductance) * s);
+        conductance =
+            static_cast<float>(params_.band_conductance + (1.0 - params_.band_conductance) * s);
       }
+      if (changed && (free != free_[k] || conductance != conductance_[k])) changed->push_back(k);
+      free_[k] = free;
+      conductance_[k] = conductance;
     }
   }
-  // Keep the outermost ring blocked so that neighbour lookups never leave the grid.
-  for (int ix = 0; ix < width_; ++ix) free_[index(ix, 0)] = free_[index(ix, height_ - 1)] = 0;
-  for (int iy = 0; iy < height_; ++iy) free_[index(0, iy)] = free_[index(width_ - 1, iy)] = 0;
 }
 
 void ConfigSpace::worldToGrid(double x, double y, double& gx, double& gy) const {

@@ -1,11 +1,13 @@
 // Planner host: loads a GlobalPlanner plugin by name, plans from tf map->base_link to goals from
 // rviz (/move_base_simple/goal) and the ~make_plan service, publishes /plan and
-// /plan_certificate, and replans when /map changes. Its one loader reads the host's keys, the
-// shared settings (with the footprint of ~chair_file) and the plugin's own keys, and refuses
-// anything else.
+// /plan_certificate, and replans when /map changes. It plans on /map plus the live obstacle
+// layer /obstacles (its kOccupied cells; updateMap, the plugin's map-change path). Its one loader
+// reads the host's keys, the shared settings (with the footprint of ~chair_file) and the plugin's
+// own keys, and refuses anything else.
 #include <wheelchair_msgs/MakePlan.h>
 #include <wheelchair_msgs/PlanCertificate.h>
 #include <wheelchair_planner/global_planner.h>
+#include <wheelchair_planner/planning_map.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/parameters.h>
 #include <wheelchair_ros/shared_tf.h>
@@ -69,6 +71,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     cert_pub_ = nh.advertise<wheelchair_msgs::PlanCertificate>("plan_certificate", 1, true);
     potential_pub_ = pnh.advertise<nav_msgs::OccupancyGrid>("potential", 1, true);
     map_sub_ = nh.subscribe("map", 1, &PlannerHostNodelet::onMap, this);
+    obstacles_sub_ = nh.subscribe("obstacles", 1, &PlannerHostNodelet::onObstacles, this);
     goal_sub_ = nh.subscribe("move_base_simple/goal", 1, &PlannerHostNodelet::onGoal, this);
     service_ = pnh.advertiseService("make_plan", &PlannerHostNodelet::onMakePlan, this);
     NODELET_INFO("planner host: %s, waiting for /map", planner_name_.c_str());
@@ -100,7 +103,9 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     std::lock_guard<std::mutex> lock(mutex_);
     const ros::WallTime started = ros::WallTime::now();
     try {
-      planner_->setMap(wheelchair_ros::fromOccupancyGrid(*msg, map_limits_));
+      static_map_ = wheelchair_ros::fromOccupancyGrid(*msg, map_limits_);
+      planner_->setMap(static_map_);
+      planned_on_ = static_map_.data;
       have_map_ = true;
     } catch (const std::exception& e) {
       have_map_ = false;
@@ -109,7 +114,49 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     }
     NODELET_INFO("planner host: map %ux%u at %.3f m, prepared in %.3f s", msg->info.width,
                  msg->info.height, msg->info.resolution, (ros::WallTime::now() - started).toSec());
+    applyObstacles();
     if (active_goal_) planAndPublish(std::nullopt, *active_goal_);  // replan on the new map
+  }
+
+  /// The live obstacle layer: the next plan is made on /map plus its obstacles. No replan here:
+  /// who drives (the navigator) decides when the change matters.
+  void onObstacles(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    // Any node can publish it too: a broken layer is refused (a throw here aborted the process).
+    const std::string problem = wheelchair_ros::occupancyGridProblem(*msg, map_limits_);
+    if (!problem.empty()) {
+      NODELET_ERROR("planner host: obstacle layer refused, keeping the last good one: %s",
+                    problem.c_str());
+      return;
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    obstacles_ = wheelchair_ros::fromOccupancyGrid(*msg, map_limits_);
+    if (have_map_) applyObstacles();
+  }
+
+  /// static_map_ + obstacles_ to the plugin (its map-change path); a layer on another grid than
+  /// the map's is ignored with a warning (the plan is then made on the map alone).
+  void applyObstacles() {
+    if (!obstacles_) return;
+    wheelchair_core::OccupancyMap merged;
+    try {
+      merged = withObstacles(static_map_, *obstacles_);
+    } catch (const std::invalid_argument& e) {
+      NODELET_WARN_THROTTLE(10.0, "planner host: /obstacles ignored: %s", e.what());
+      merged = static_map_;
+    }
+    if (merged.data == planned_on_) return;
+    const ros::WallTime started = ros::WallTime::now();
+    try {
+      planner_->updateMap(merged);
+      planned_on_ = std::move(merged.data);
+    } catch (const std::exception& e) {
+      NODELET_ERROR("planner host: map with obstacles rejected: %s", e.what());
+      planner_->setMap(static_map_);
+      planned_on_ = static_map_.data;
+      return;
+    }
+    NODELET_DEBUG("planner host: obstacle layer applied in %.4f s",
+                  (ros::WallTime::now() - started).toSec());
   }
 
   void onGoal(const geometry_msgs::PoseStamped::ConstPtr& msg) {
@@ -220,7 +267,10 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   wheelchair_core::MapLimits map_limits_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   ros::Publisher plan_pub_, cert_pub_, potential_pub_;
-  ros::Subscriber map_sub_, goal_sub_;
+  ros::Subscriber map_sub_, obstacles_sub_, goal_sub_;
+  wheelchair_core::OccupancyMap static_map_;                ///< the last /map
+  std::optional<wheelchair_core::OccupancyMap> obstacles_;  ///< the last /obstacles
+  std::vector<int8_t> planned_on_;                          ///< cells of the map the plugin has now
   ros::ServiceServer service_;
   std::mutex mutex_;
   bool have_map_ = false;

@@ -1,9 +1,15 @@
-// The C-space: dilation radius, unknown cells, conductance of the clearance band.
+// The C-space: dilation radius, unknown cells, conductance of the clearance band, the in-place
+// update after a map change.
 #include <wheelchair_planner/config_space.h>
+#include <wheelchair_planner_test/maze.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <random>
+#include <vector>
 
 using namespace wheelchair_planner;
 using wheelchair_core::OccupancyMap;
@@ -86,4 +92,98 @@ TEST(ConfigSpace, RejectsBadInput) {
   OccupancyMap bad = freeMap(10, 10, 0.05);
   bad.data.pop_back();
   EXPECT_THROW(ConfigSpace(bad, ConfigSpaceParams()), std::invalid_argument);
+}
+
+namespace {
+
+/// `actual` holds exactly what a C-space built afresh from the same map holds.
+void expectSameCspace(const ConfigSpace& expected, const ConfigSpace& actual) {
+  ASSERT_EQ(expected.width(), actual.width());
+  ASSERT_EQ(expected.height(), actual.height());
+  for (int iy = 0; iy < expected.height(); ++iy) {
+    for (int ix = 0; ix < expected.width(); ++ix) {
+      ASSERT_EQ(expected.isFree(ix, iy), actual.isFree(ix, iy)) << ix << "," << iy;
+      ASSERT_FLOAT_EQ(expected.obstacleDistance(ix, iy), actual.obstacleDistance(ix, iy))
+          << ix << "," << iy;
+      ASSERT_FLOAT_EQ(expected.conductance(ix, iy), actual.conductance(ix, iy)) << ix << "," << iy;
+    }
+  }
+}
+
+/// The cells whose free state or conductance differ between two C-spaces of one grid.
+std::vector<size_t> differingCells(const ConfigSpace& a, const ConfigSpace& b) {
+  std::vector<size_t> cells;
+  for (int iy = 0; iy < a.height(); ++iy)
+    for (int ix = 0; ix < a.width(); ++ix)
+      if (a.isFree(ix, iy) != b.isFree(ix, iy) || a.conductance(ix, iy) != b.conductance(ix, iy))
+        cells.push_back(a.index(ix, iy));
+  return cells;
+}
+
+void fillSquare(OccupancyMap& m, int x, int y, int size, int8_t value) {
+  for (int iy = std::max(0, y); iy < std::min(m.height, y + size); ++iy)
+    for (int ix = std::max(0, x); ix < std::min(m.width, x + size); ++ix) m.at(ix, iy) = value;
+}
+
+}  // namespace
+
+// Obstacles of 1 to 20 cells dropped on a maze and on an open room and taken away again, one
+// after the other: after each update the C-space equals one built afresh from that map, and the
+// reported cells are exactly those whose free state or conductance changed.
+TEST(ConfigSpace, UpdateEqualsAFreshCspaceAfterObstaclesAppearAndGo) {
+  std::mt19937 rng(3);
+  for (const OccupancyMap& base : {makeMaze(160, 18, 4, 5), freeMap(120, 90, 0.05)}) {
+    ConfigSpace cs(base, ConfigSpaceParams());
+    OccupancyMap current = base;
+    std::vector<std::array<int, 3>> dropped;  // x, y, size
+    int windowed = 0;
+    for (int step = 0; step < 24; ++step) {
+      OccupancyMap next = current;
+      if (dropped.empty() || rng() % 3 != 0) {
+        std::array<int, 3> o{static_cast<int>(rng() % base.width),
+                             static_cast<int>(rng() % base.height),
+                             1 + static_cast<int>(rng() % 20)};
+        fillSquare(next, o[0], o[1], o[2], wheelchair_core::kOccupied);
+        dropped.push_back(o);
+      } else {  // the oldest one goes: its cells back to the base map's
+        const auto o = dropped.front();
+        dropped.erase(dropped.begin());
+        for (int iy = std::max(0, o[1]); iy < std::min(base.height, o[1] + o[2]); ++iy)
+          for (int ix = std::max(0, o[0]); ix < std::min(base.width, o[0] + o[2]); ++ix)
+            next.at(ix, iy) = base.at(ix, iy);
+        for (const auto& d : dropped)
+          fillSquare(next, d[0], d[1], d[2], wheelchair_core::kOccupied);
+      }
+      const ConfigSpace before(current, ConfigSpaceParams());
+      const ConfigSpace fresh(next, ConfigSpaceParams());
+      const ConfigSpaceChange change = cs.update(next);
+      expectSameCspace(fresh, cs);
+      if (!change.rebuilt) {
+        ++windowed;
+        EXPECT_EQ(change.cells, differingCells(before, fresh)) << "step " << step;
+      }
+      current = next;
+    }
+    EXPECT_GE(windowed, 20);  // removals that open space farther than before rebuild
+  }
+}
+
+// A pillar taken out of a room leaves a spot farther from every obstacle than any cell was: the
+// window's bound no longer holds and the C-space is rebuilt (still exact); the same map again
+// changes nothing; another grid size is rebuilt.
+TEST(ConfigSpace, UpdateRebuildsWhereTheWindowCannotBeExact) {
+  OccupancyMap room = freeMap(100, 100, 0.05);
+  fillSquare(room, 45, 45, 10, wheelchair_core::kOccupied);
+  ConfigSpace cs(room, ConfigSpaceParams());
+  const int revision = cs.revision();
+  EXPECT_FALSE(cs.update(room).distancesChanged());
+  EXPECT_EQ(cs.revision(), revision);
+  const OccupancyMap empty = freeMap(100, 100, 0.05);
+  const ConfigSpaceChange change = cs.update(empty);
+  EXPECT_TRUE(change.rebuilt);
+  EXPECT_EQ(cs.revision(), revision + 1);
+  expectSameCspace(ConfigSpace(empty, ConfigSpaceParams()), cs);
+  const OccupancyMap other = freeMap(80, 100, 0.05);
+  EXPECT_TRUE(cs.update(other).rebuilt);
+  expectSameCspace(ConfigSpace(other, ConfigSpaceParams()), cs);
 }

@@ -11,6 +11,7 @@
 #include <wheelchair_slam/graph_slam.h>
 #include <wheelchair_slam/odometry_log.h>
 #include <wheelchair_slam/slam_map.h>
+#include <wheelchair_slam/slam_session.h>
 #include <wheelchair_slam/trajectory_io.h>
 #include <yaml-cpp/yaml.h>
 #include "bag_source.h"
@@ -22,6 +23,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -31,14 +36,15 @@ namespace {
 const char* kUsage =
     "usage: slam --log FILE [--out DIR] [--odometry fields|gfs] [--config FILE.yaml]\n"
     "            [--resolution M] [--max-range M] [--hold-out N] [--odometry-only] [--quiet]\n"
-    "            [--scan-topic T] [--odom-frame F]\n"
+    "            [--scan-topic T] [--odom-frame F] [--scans FIRST:END]\n"
+    "            [--continue DIR [--start X,Y,YAW]]\n"
     "  FILE             CARMEN log (plain or .gz) with FLASER/ROBOTLASER1 and raw odometry,\n"
     "                   or a rosbag (.bag): LaserScan on --scan-topic (default /scan), the\n"
     "                   laser's odometry pose from /tf in --odom-frame (default odom)\n"
     "  --out DIR        output folder (default slam_out): map.yaml/.pgm/.png, trajectory.csv,\n"
     "                   trajectory.clf, odometry.csv, logged.csv (the log's own poses),\n"
-    "                   matches.csv (how each scan matched), graph.graph (the pose graph),\n"
-    "                   stats.json\n"
+    "                   matches.csv (how each scan matched), graph.graph (the pose graph,\n"
+    "                   g2o), graph.scans (what --continue needs), stats.json\n"
     "  --odometry SRC   fields: the FLASER odom fields are raw odometry (default);\n"
     "                   gfs: a GMapping-corrected log, raw odometry from its ODOM increments\n"
     "  --config FILE    SLAM parameters (YAML, the keys of readSlamConfig; unknown keys refused)\n"
@@ -46,15 +52,50 @@ const char* kUsage =
     "  --max-range M    map insertion range (default 20)\n"
     "  --hold-out N     keep every Nth scan out of the map (not out of SLAM) and report the\n"
     "                   fraction of its endpoints on occupied cells\n"
-    "  --odometry-only  no scan matching: the trajectory is the raw odometry (a baseline)\n";
+    "  --odometry-only  no scan matching: the trajectory is the raw odometry (a baseline)\n"
+    "  --scans F:E      only the log's scans F .. E-1 (0-based; either may be left out)\n"
+    "  --continue DIR   continue the map saved in DIR (graph.graph + graph.scans of an earlier\n"
+    "                   run): this log is a new drive, located in that map and joined to its\n"
+    "                   graph; the output holds the saved scans and the new ones\n"
+    "  --start X,Y,YAW  where the new drive starts in the saved map (default: the saved\n"
+    "                   drive's map -> odom applied to the log's odometry, i.e. the same\n"
+    "                   odometry frame goes on)\n";
 
 struct Args {
   std::string log, out = "slam_out", odometry = "fields", config;
   std::string scan_topic = "/scan", odom_frame = "odom";
+  std::string continue_dir;
+  std::optional<wheelchair_core::Pose2D> start;
   double resolution = 0.05, max_range = 20.0;
   int hold_out = 0;
+  size_t first_scan = 0, end_scan = std::numeric_limits<size_t>::max();
   bool odometry_only = false, quiet = false;
 };
+
+/// "F:E", "F:" or ":E" as the scan range [F, E).
+bool parseRange(const std::string& text, size_t& first, size_t& end) {
+  const size_t colon = text.find(':');
+  if (colon == std::string::npos) return false;
+  auto part = [](const std::string& p, size_t& out) {
+    if (p.empty()) return true;
+    char* e = nullptr;
+    const long v = std::strtol(p.c_str(), &e, 10);
+    if (!e || *e != '\0' || v < 0) return false;
+    out = static_cast<size_t>(v);
+    return true;
+  };
+  return part(text.substr(0, colon), first) && part(text.substr(colon + 1), end) && first < end;
+}
+
+bool parsePose(const std::string& text, std::optional<wheelchair_core::Pose2D>& pose) {
+  wheelchair_core::Pose2D p;
+  char c1 = 0, c2 = 0;
+  std::istringstream s(text);
+  if (!(s >> p.x >> c1 >> p.y >> c2 >> p.yaw) || c1 != ',' || c2 != ',' || !p.isFinite())
+    return false;
+  pose = p;
+  return true;
+}
 
 bool parseArgs(int argc, char** argv, Args& a) {
   for (int i = 1; i < argc; ++i) {
@@ -90,7 +131,15 @@ bool parseArgs(int argc, char** argv, Args& a) {
       ok = number(a.max_range);
     else if (k == "--hold-out")
       ok = number(a.hold_out);
-    else if (k == "--odometry-only")
+    else if (k == "--continue")
+      ok = text(a.continue_dir);
+    else if (k == "--scans") {
+      std::string v;
+      ok = text(v) && parseRange(v, a.first_scan, a.end_scan);
+    } else if (k == "--start") {
+      std::string v;
+      ok = text(v) && parsePose(v, a.start);
+    } else if (k == "--odometry-only")
       a.odometry_only = true;
     else if (k == "--quiet")
       a.quiet = true;
@@ -151,22 +200,60 @@ std::vector<TimedPose> timed(const std::vector<double>& stamps,
 template <typename Reader>
 int runWith(Reader& reader, const Args& a, const SlamConfig& config,
             std::chrono::steady_clock::time_point start) {
-  GraphSlam slam(config);
-  wheelchair_logs::ProgressBar bar(stderr, "slam", !a.quiet);
+  std::unique_ptr<GraphSlam> slam_ptr;
   std::vector<wheelchair_core::LaserScan2D> scans;
   std::vector<wheelchair_core::Pose2D> odometry, logged;
   std::vector<double> stamps;
+  if (!a.continue_dir.empty()) {
+    SavedSlam saved = loadSlam(a.continue_dir, config);
+    for (const ScanRecord& r : saved.records) {
+      odometry.push_back(r.odometry);
+      stamps.push_back(r.stamp);
+    }
+    scans = std::move(saved.scans);
+    slam_ptr = std::make_unique<GraphSlam>(config, std::move(saved.graph), saved.records);
+    logged = slam_ptr->trajectory();  // the saved run's poses stand for the log's own
+    if (a.start) slam_ptr->startDrive(*a.start);
+    if (!a.quiet)
+      std::cerr << "slam: continuing " << a.continue_dir << " (" << scans.size() << " scans, "
+                << slam_ptr->graph().size() << " keyframes)\n";
+  } else {
+    slam_ptr = std::make_unique<GraphSlam>(config);
+  }
+  GraphSlam& slam = *slam_ptr;
+  const size_t saved_scans = scans.size();
+  wheelchair_logs::ProgressBar bar(stderr, "slam", !a.quiet);
+  size_t log_index = 0, not_located = 0;
+  double last_read = -std::numeric_limits<double>::infinity();
   for (OdometryScan s; reader.next(s);) {
     if (!reader.problemsOfLastCall().empty()) {
       bar.breakLine();
       std::cerr << reader.problemsOfLastCall() << " (skipped)\n";
     }
-    if (!scans.empty() && s.scan.stamp < stamps.back()) {
+    if (s.scan.stamp < last_read) {
       bar.breakLine();
       std::cerr << a.log << ":" << s.line << ": scan skipped: its stamp goes backwards\n";
       continue;
     }
-    if (!a.odometry_only) slam.addScan(s.scan, s.odometry);
+    last_read = s.scan.stamp;
+    const size_t index = log_index++;  // the scan's number in the log (--scans)
+    if (index < a.first_scan) continue;
+    if (index >= a.end_scan) break;
+    if (!stamps.empty() && s.scan.stamp < stamps.back()) {
+      bar.breakLine();
+      std::cerr << a.log << ":" << s.line << ": scan skipped: older than the saved map's last\n";
+      continue;
+    }
+    if (!a.odometry_only && !slam.addScan(s.scan, s.odometry)) {
+      ++not_located;  // a new drive not (yet) found in the saved map: the scan is left out
+      continue;
+    }
+    if (not_located > 0 && !a.quiet) {
+      bar.breakLine();
+      std::cerr << "slam: the new drive was located in the saved map after " << not_located
+                << " scans\n";
+      not_located = 0;
+    }
     odometry.push_back(s.odometry);
     logged.push_back(s.logged_pose);
     stamps.push_back(s.scan.stamp);
@@ -176,6 +263,10 @@ int runWith(Reader& reader, const Args& a, const SlamConfig& config,
   }
   bar.update(1.0, std::to_string(scans.size()) + " scans");
   bar.breakLine();
+  if (scans.size() == saved_scans && !a.continue_dir.empty()) {
+    std::cerr << a.log << ": the new drive was never located in the saved map (give --start)\n";
+    return 1;
+  }
   if (scans.empty()) {
     std::cerr << a.log << ": no usable laser scan in the log\n";
     return 1;
@@ -193,7 +284,7 @@ int runWith(Reader& reader, const Args& a, const SlamConfig& config,
   writeTrajectoryCsv((out / "logged.csv").string(), timed(stamps, logged));
   if (!a.odometry_only) {
     writeMatchesCsv((out / "matches.csv").string(), stamps, slam.matchInfo());
-    slam.graph().save((out / "graph.graph").string());
+    saveSlam(out.string(), slam, scans);
   }
   if (flaserCompatible(scans)) {
     writeCarmenLog((out / "trajectory.clf").string(), scans, poses, odometry);
@@ -239,6 +330,8 @@ int runWith(Reader& reader, const Args& a, const SlamConfig& config,
   json << YAML::Key << "log" << YAML::Value << a.log;
   json << YAML::Key << "scans" << YAML::Value << scans.size();
   json << YAML::Key << "keyframes" << YAML::Value << st.keyframes;
+  json << YAML::Key << "drives" << YAML::Value << st.drives;
+  json << YAML::Key << "continued_scans" << YAML::Value << saved_scans;
   json << YAML::Key << "match_failures" << YAML::Value << st.match_failures;
   json << YAML::Key << "loop_attempts" << YAML::Value << st.loop_attempts;
   json << YAML::Key << "loops_verified" << YAML::Value << st.loops_verified;

@@ -6,6 +6,7 @@
 #include <wheelchair_core/pose2d.h>
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -111,6 +112,38 @@ inline std::vector<wheelchair_core::Pose2D> driftingOdometry(
     out.push_back(wheelchair_core::compose(out.back(), d));
   }
   return out;
+}
+
+/// Scans cast at the true poses, and the odometry at each.
+struct Drive {
+  std::vector<wheelchair_core::Pose2D> truth, odometry;
+  std::vector<wheelchair_core::LaserScan2D> scans;
+};
+
+/// Two laps around the block, odometry with a 3 % scale error and 0.02 rad/m heading drift.
+inline Drive syntheticDrive() {
+  std::mt19937 rng(11);
+  Drive d;
+  d.truth = loopDrive(0.2, 2);
+  d.odometry = driftingOdometry(d.truth, 1.03, 0.02, 0.002, rng);
+  const auto world = officeWorld();
+  for (size_t i = 0; i < d.truth.size(); ++i) {
+    d.scans.push_back(castScan(world, d.truth[i], 0.2 * i, 0.01, rng));
+  }
+  return d;
+}
+
+/// Largest position error after aligning the first poses (the map frame starts there).
+inline double maxError(const std::vector<wheelchair_core::Pose2D>& estimate,
+                       const std::vector<wheelchair_core::Pose2D>& truth) {
+  const wheelchair_core::Pose2D align =
+      wheelchair_core::compose(truth[0], wheelchair_core::inverse(estimate[0]));
+  double worst = 0.0;
+  for (size_t i = 0; i < truth.size(); ++i) {
+    const wheelchair_core::Pose2D p = wheelchair_core::compose(align, estimate[i]);
+    worst = std::max(worst, std::hypot(p.x - truth[i].x, p.y - truth[i].y));
+  }
+  return worst;
 }
 
 }  // namespace wheelchair_slam_test

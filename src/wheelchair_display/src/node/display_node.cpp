@@ -1,7 +1,7 @@
 #include "display_node.h"
 
 #include <wheelchair_description/chair_file.h>
-#include <wheelchair_display/places_file.h>
+#include <wheelchair_hmi/places_file.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/shared_tf.h>
 
@@ -14,6 +14,9 @@
 #include <chrono>
 
 namespace wheelchair_display {
+using wheelchair_hmi::placeId;
+using wheelchair_hmi::placeNameProblem;
+using wheelchair_hmi::savePlaces;
 namespace {
 
 /// The name of the service that checks a route without driving it (remap it to the planner that

@@ -42,6 +42,10 @@ class HarmonicPlanner : public wheelchair_planner::GlobalPlanner {
   /// wheelchair_core::ConfigError if it is invalid.
   void configure(const PlannerSettings& settings, const HarmonicPlannerConfig& config);
   void setMap(const wheelchair_core::OccupancyMap& map) override;
+  /// A map of the same grid with some cells changed: the C-space updated in a window around
+  /// them and the direct solver's factors adapted (updateHarmonicFactor), no new factorization
+  /// while only cells free in the factored map are blocked or freed again; another grid: setMap.
+  void updateMap(const wheelchair_core::OccupancyMap& map) override;
   bool makePlan(const Pose2D& start, const Pose2D& goal, std::vector<Pose2D>& plan,
                 Certificate& certificate) override;
   /// 100 * log u / (lowest finite log u): 0 at the goal, 100 at the farthest connected cell.

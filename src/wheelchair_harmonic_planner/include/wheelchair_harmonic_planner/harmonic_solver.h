@@ -14,6 +14,7 @@
 namespace wheelchair_harmonic_planner {
 
 using wheelchair_planner::ConfigSpace;
+using wheelchair_planner::ConfigSpaceChange;
 using wheelchair_planner::ConfigSpaceParams;
 
 struct HarmonicSolverParams {
@@ -75,15 +76,20 @@ struct FactorTiming {
 /// The direct solver's map-dependent part: the ordering and LDL^T factors of the equation of
 /// every free cell, which do not depend on the goal (log_cholesky.h). Kept by the caller between
 /// solves on the same ConfigSpace object, a new goal then costs two triangular solves instead of
-/// a factorization. The cache is tied to the ConfigSpace it was filled for (its address): call
-/// reset() whenever that object is replaced or destroyed.
+/// a factorization. The cache is tied to the ConfigSpace it was filled for (its address and
+/// revision): call reset() whenever that object is replaced or destroyed; after an in-place
+/// ConfigSpace::update(), updateHarmonicFactor() adapts the factors to it.
 struct HarmonicFactorCache {
-  std::shared_ptr<const LogLdlt> factor;
+  std::shared_ptr<LogLdlt> factor;
   const ConfigSpace* cspace = nullptr;
+  int revision = 0;  ///< ConfigSpace::revision() the factors are for
   bool use_conductance = true;
-  int factorizations = 0;    ///< factors computed through this cache (for tests and the bench)
-  int orderings_reused = 0;  ///< of those, with the previous map's ordering
-  FactorTiming timing;       ///< of the last factorization
+  int factorizations = 0;        ///< factors computed through this cache (for tests and the bench)
+  int orderings_reused = 0;      ///< of those, with the previous map's ordering
+  int factor_updates = 0;        ///< factors adapted to a C-space update (updateHarmonicFactor)
+  size_t updated_columns = 0;    ///< factor columns the last of those recomputed
+  double update_cpu_time = 0.0;  ///< CPU seconds of the last of those
+  FactorTiming timing;           ///< of the last factorization
   /// Kept across reset(): the last factorization's ordering, for a map with the same free cells.
   std::shared_ptr<const FactorOrdering> ordering;
   std::vector<double> spare;  ///< storage recycled for the next solution's log_u
@@ -101,6 +107,16 @@ HarmonicSolution solveHarmonic(const ConfigSpace& cspace, int goal_ix, int goal_
                                const HarmonicSolverParams& params,
                                const HarmonicSolution* warm_start = nullptr,
                                HarmonicFactorCache* factor_cache = nullptr);
+
+/// After `cspace.update()` returned `change`: the cached factors (for the C-space's previous
+/// revision) adapted in place (LogLdlt::update: only the factor columns that depend on a
+/// changed row are recomputed), so that the next solve needs no factorization. True if the
+/// cache now holds the factors of `cspace`. False if it held none for the previous revision, or
+/// the C-space was rebuilt, or a cell is free that was not free in the factored C-space (cells
+/// only blocked and freed again relative to it are fine): the cache is then reset (its ordering
+/// kept), and the next solve factors afresh.
+bool updateHarmonicFactor(const ConfigSpace& cspace, const ConfigSpaceChange& change,
+                          const HarmonicSolverParams& params, HarmonicFactorCache& factor_cache);
 
 /// The direct solver's map-dependent work done ahead of any goal: fills `factor_cache` with the
 /// factors of `cspace` (nothing to do if it already holds them, or for the iterative solvers,

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <wheelchair_core/laser_scan.h>
+#include <wheelchair_core/pose2d.h>
 #include <wheelchair_mapping/inverse_sensor_model.h>
 
 #include <cstddef>
@@ -21,5 +22,12 @@ struct BeamUse {
 /// no-return range if the model allows it.
 BeamUse useOfBeam(float range, const wheelchair_core::LaserScan2D& scan,
                   const InverseSensorModel& model);
+
+/// Why a whole scan taken at `sensor_pose` cannot be fused into a grid ("" if it can): a
+/// non-finite pose, a geometry scanGeometryProblem refuses (`expected_beams`, 0: any), or a
+/// stamp older than `last_stamp` (the grid's last fused scan).
+std::string scanInsertProblem(const wheelchair_core::LaserScan2D& scan,
+                              const wheelchair_core::Pose2D& sensor_pose, size_t expected_beams,
+                              double last_stamp);
 
 }  // namespace wheelchair_mapping

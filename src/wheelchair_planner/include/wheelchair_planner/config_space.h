@@ -28,12 +28,34 @@ struct ConfigSpaceParams {
 /// Keys: inscribed_radius, min_clearance, clearance_band, band_conductance, unknown_is_obstacle.
 void readConfigSpaceParams(wheelchair_core::ConfigReader& reader, ConfigSpaceParams& params);
 
+/// What ConfigSpace::update() changed.
+struct ConfigSpaceChange {
+  /// Recomputed from scratch (another grid geometry, or a distance beyond the bound that makes
+  /// a windowed update exact): every cell may have changed.
+  bool rebuilt = false;
+  /// Cells whose free state or conductance changed (when not rebuilt), in index order.
+  std::vector<size_t> cells;
+  /// Cells whose obstacle distance may have changed: [x0, x1) x [y0, y1) (empty if none).
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool distancesChanged() const { return rebuilt || (x1 > x0 && y1 > y0); }
+};
+
 class ConfigSpace {
  public:
   /// Builds the C-space. Cells outside the map count as obstacles (the border row/column of the
   /// grid is always blocked so that every path stays inside the map). Throws
   /// std::invalid_argument on invalid parameters or a map it cannot use.
   ConfigSpace(const wheelchair_core::OccupancyMap& map, const ConfigSpaceParams& params);
+
+  /// The same C-space for `map`, a map of this grid with some cells changed (e.g. the live
+  /// obstacle layer over the static map), recomputed in place: only in a window around the
+  /// changed cells, exactly as a new ConfigSpace(map, params()) would have it (the window is
+  /// wide enough that no cell outside it can change: the largest obstacle distance of the grid
+  /// bounds how far a changed cell can reach). A map of another geometry is rebuilt. Objects
+  /// that refer to this one (the footprint checker) stay valid. Throws like the constructor.
+  ConfigSpaceChange update(const wheelchair_core::OccupancyMap& map);
+  /// Incremented by every update() that changed something (0 after construction).
+  int revision() const { return revision_; }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -72,6 +94,18 @@ class ConfigSpace {
   size_t freeCount() const;
 
  private:
+  /// Distance transform (cell centre to the nearest obstacle cell centre, in cells) of the
+  /// cells [x0, x1) x [y0, y1), which may reach one cell beyond the map (its outside is an
+  /// obstacle), seeing only the obstacles inside that window; row-major, (x1 - x0) per row.
+  std::vector<float> transform(const wheelchair_core::OccupancyMap& map, int x0, int y0, int x1,
+                               int y1) const;
+  /// Distance, free state and conductance of the cells [x0, x1) x [y0, y1) from `dist`, a
+  /// transform whose element 0 is grid cell (dx0, dy0), `stride` per row; the cells whose free
+  /// state or conductance changed are appended to `changed` if not null.
+  void setCells(const std::vector<float>& dist, int stride, int dx0, int dy0, int x0, int y0,
+                int x1, int y1, std::vector<size_t>* changed);
+  bool isObstacleValue(int8_t v) const;
+
   int width_ = 0;
   int height_ = 0;
   double resolution_ = 0.05;
@@ -79,8 +113,12 @@ class ConfigSpace {
   double origin_y_ = 0.0;
   ConfigSpaceParams params_;
   std::vector<uint8_t> free_;
+  std::vector<uint8_t> obstacle_;  ///< the map's obstacle cells (what update() compares)
   std::vector<float> distance_;
   std::vector<float> conductance_;
+  /// Upper bound of the distance transform (cell centre to obstacle centre) over the grid [cells].
+  float max_transform_ = 0.0f;
+  int revision_ = 0;
 };
 
 }  // namespace wheelchair_planner

@@ -30,6 +30,12 @@ class GlobalPlanner {
   /// std::invalid_argument on a map it cannot use.
   virtual void setMap(const wheelchair_core::OccupancyMap& map) = 0;
 
+  /// The map after a small change of its cells (the live obstacle layer over the static map:
+  /// same grid, some cells blocked or freed again), between plans. A plugin with a faster
+  /// map-change path overrides it (the harmonic plugin adapts its C-space and factorization in
+  /// place); by default it is setMap(). Throws like setMap().
+  virtual void updateMap(const wheelchair_core::OccupancyMap& map) { setMap(map); }
+
   /// Plans from start to goal (map frame). On success `plan` runs from start to goal with
   /// headings; on failure it is empty and certificate.failure_reason says why. The certificate
   /// is filled in both cases.

@@ -21,6 +21,9 @@ class PlanningMap {
   PlanningMap& operator=(const PlanningMap&) = delete;
 
   const ConfigSpace& cspace() const { return cspace_; }
+  /// The same for `map`, a map of this grid with some cells changed, in place (ConfigSpace::
+  /// update; the checker stays on it).
+  ConfigSpaceChange update(const wheelchair_core::OccupancyMap& map) { return cspace_.update(map); }
   const FootprintChecker& checker() const { return checker_; }
 
   /// The end of a plugin's makePlan: `plan` (the first stage's path from the start position to
@@ -35,5 +38,11 @@ class PlanningMap {
   ConfigSpace cspace_;
   FootprintChecker checker_;  ///< on cspace_
 };
+
+/// `map` with every cell that `obstacles` (the live obstacle layer, /obstacles: the same grid)
+/// holds as kOccupied made occupied; the layer never frees a cell of the map. Throws
+/// std::invalid_argument if the two grids differ in size, resolution or origin.
+wheelchair_core::OccupancyMap withObstacles(const wheelchair_core::OccupancyMap& map,
+                                            const wheelchair_core::OccupancyMap& obstacles);
 
 }  // namespace wheelchair_planner

@@ -1,4 +1,4 @@
-#include <wheelchair_display/places_file.h>
+#include <wheelchair_hmi/places_file.h>
 
 #include <yaml-cpp/yaml.h>
 
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
-namespace wheelchair_display {
+namespace wheelchair_hmi {
 
 std::string placeId(const std::string& typed) {
   std::string id;
@@ -25,18 +25,17 @@ std::string placeId(const std::string& typed) {
   return id;
 }
 
-std::string placeNameProblem(const std::string& id,
-                             const std::vector<wheelchair_hmi::Place>& places) {
+std::string placeNameProblem(const std::string& id, const std::vector<Place>& places) {
   if (id.empty()) return "the name is empty";
   for (char c : id)
     if (!(std::islower(static_cast<unsigned char>(c)) ||
           std::isdigit(static_cast<unsigned char>(c)) || c == '_'))
       return "'" + id + "' may hold only a-z, 0-9 and _";
-  if (wheelchair_hmi::findPlace(places, id)) return "there is already a place called '" + id + "'";
+  if (findPlace(places, id)) return "there is already a place called '" + id + "'";
   return "";
 }
 
-void savePlaces(const std::string& yaml_path, const std::vector<wheelchair_hmi::Place>& places) {
+void savePlaces(const std::string& yaml_path, const std::vector<Place>& places) {
   YAML::Node root;
   try {
     if (std::ifstream(yaml_path)) root = YAML::LoadFile(yaml_path);
@@ -70,7 +69,8 @@ void savePlaces(const std::string& yaml_path, const std::vector<wheelchair_hmi::
     YAML::Emitter emitter;
     emitter.SetDoublePrecision(6);
     emitter << root;
-    out << "# Named places (map frame, metres / radians), grouped by room; edited on the display.\n"
+    out << "# Named places (map frame, metres / radians), grouped by room; edited on the display "
+           "or by the SLAM save_place service.\n"
         << emitter.c_str() << "\n";
     if (!out) throw std::runtime_error(yaml_path + ": cannot write " + tmp);
   }
@@ -78,4 +78,4 @@ void savePlaces(const std::string& yaml_path, const std::vector<wheelchair_hmi::
     throw std::runtime_error(yaml_path + ": cannot replace it with " + tmp);
 }
 
-}  // namespace wheelchair_display
+}  // namespace wheelchair_hmi

@@ -1,11 +1,11 @@
 #include <gtest/gtest.h>
-#include <wheelchair_display/places_file.h>
+#include <wheelchair_hmi/places_file.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cstdio>
 #include <fstream>
 
-namespace wheelchair_display {
+namespace wheelchair_hmi {
 
 TEST(PlacesFile, TypedNamesBecomeIdentifiers) {
   EXPECT_EQ(placeId("Front door "), "front_door");
@@ -14,7 +14,7 @@ TEST(PlacesFile, TypedNamesBecomeIdentifiers) {
 }
 
 TEST(PlacesFile, ANewNameMustBeFreeAndPlain) {
-  const std::vector<wheelchair_hmi::Place> places = {{"sofa", "living_room", {1, 1, 0}}};
+  const std::vector<Place> places = {{"sofa", "living_room", {1, 1, 0}}};
   EXPECT_EQ(placeNameProblem("armchair", places), "");
   EXPECT_NE(placeNameProblem("sofa", places), "");
   EXPECT_NE(placeNameProblem("", places), "");
@@ -28,10 +28,10 @@ TEST(PlacesFile, SavedPlacesReadBackWithTheHmisReaderKeepingTheOtherKeys) {
     out << "map: flat.yaml\nrooms: [living_room, kitchen]\nplaces:\n"
            "  - {name: sofa, room: living_room, x: 3.2, y: 1.0, yaw: 3.1416}\n";
   }
-  auto places = wheelchair_hmi::loadPlaces(path);
+  auto places = loadPlaces(path);
   places.push_back({"by_the_window", "study", {7.25, 6.5, -1.2}});
   savePlaces(path, places);
-  const auto back = wheelchair_hmi::loadPlaces(path);
+  const auto back = loadPlaces(path);
   ASSERT_EQ(back.size(), 2u);
   EXPECT_EQ(back[1].name, "by_the_window");
   EXPECT_EQ(back[1].room, "study");
@@ -46,10 +46,10 @@ TEST(PlacesFile, SavedPlacesReadBackWithTheHmisReaderKeepingTheOtherKeys) {
 }
 
 TEST(PlacesFile, TheTestWorldsPlacesSurviveARewrite) {
-  const auto places = wheelchair_hmi::loadPlaces(std::string(WORLDS_DIR) + "/flat.places.yaml");
+  const auto places = loadPlaces(std::string(WORLDS_DIR) + "/flat.places.yaml");
   const std::string path = ::testing::TempDir() + "/display_flat_copy.yaml";
   savePlaces(path, places);
-  const auto back = wheelchair_hmi::loadPlaces(path);
+  const auto back = loadPlaces(path);
   ASSERT_EQ(back.size(), places.size());
   for (size_t i = 0; i < places.size(); ++i) {
     EXPECT_EQ(back[i].name, places[i].name);
@@ -58,4 +58,4 @@ TEST(PlacesFile, TheTestWorldsPlacesSurviveARewrite) {
   std::remove(path.c_str());
 }
 
-}  // namespace wheelchair_display
+}  // namespace wheelchair_hmi

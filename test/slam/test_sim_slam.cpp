@@ -1,0 +1,183 @@
+// rostest, the chair's mapping mode end to end (issue 23): the simulator's chair (flat world,
+// odometry with sim.yaml's systematic and random errors) is driven like a carer pushing it
+// from the living room through the doorway into the kitchen, while `wheelchair mapping.yaml`
+// maps live. Checked against the simulator's ground truth, not against the SLAM itself:
+// - the live /map, brought into the world frame (the map frame is where odometry started: the
+//   chair's initial pose), classifies >= 98 % of its observed cells like the world file (the
+//   known-pose mapping test's criterion, test/mapping);
+// - tf map -> base_link at the end of the drive is within 10 cm / 0.05 rad of the true pose
+//   and closer to it than the odometry's (measured: 3 cm vs 32 cm);
+// - ~save_place writes the chair's pose into a new places file the HMI's reader loads, within
+//   10 cm of the true pose; ~save_map writes a map file that loads, the trajectory and the graph.
+#include <geometry_msgs/TransformStamped.h>
+#include <gtest/gtest.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+#include <wheelchair_core/map_io.h>
+#include <wheelchair_hmi/places.h>
+#include <wheelchair_msgs/SavePlace.h>
+#include <wheelchair_ros/conversions.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <string>
+
+#include "map_accuracy.h"
+#include "sim_drive.h"
+
+namespace {
+
+using wheelchair_core::Pose2D;
+
+constexpr double kDriveLimit = 90.0;  // [s simulated] the route takes ~17 s
+// The route of test/mapping's sim_mapping (living room -> doorway -> kitchen, clearance checked).
+const std::vector<wheelchair_test_drive::Waypoint> kRoute = {{5.5, 4.85}, {8.0, 4.85}};
+constexpr double kFinalYaw = -M_PI / 2;
+
+/// The SLAM map (map frame) resampled into the world grid's cells: T_world_map = `origin`.
+wheelchair_core::OccupancyMap inWorldFrame(const wheelchair_core::OccupancyMap& slam,
+                                           const wheelchair_core::OccupancyMap& world,
+                                           const Pose2D& origin) {
+  wheelchair_core::OccupancyMap out = world;
+  std::fill(out.data.begin(), out.data.end(), wheelchair_core::kUnknown);
+  const Pose2D to_map = wheelchair_core::inverse(origin);
+  for (int iy = 0; iy < out.height; ++iy) {
+    for (int ix = 0; ix < out.width; ++ix) {
+      double x, y;
+      out.cellToWorld(ix, iy, x, y);
+      const Eigen::Vector2d p = wheelchair_core::transformPoint(to_map, Eigen::Vector2d(x, y));
+      int sx, sy;
+      if (slam.worldToCell(p.x(), p.y(), sx, sy)) out.at(ix, iy) = slam.at(sx, sy);
+    }
+  }
+  return out;
+}
+
+TEST(SimSlam, ALiveMapOfTwoRoomsMatchesTheWorldAndPlacesAreSavedAtTheTruePose) {
+  ros::NodeHandle nh, pnh("~");
+  std::string world_file, save_dir, places_file;
+  ASSERT_TRUE(pnh.getParam("world", world_file));
+  ASSERT_TRUE(pnh.getParam("save_dir", save_dir));
+  ASSERT_TRUE(pnh.getParam("places_file", places_file));
+  std::filesystem::remove_all(save_dir);
+  std::filesystem::create_directories(std::filesystem::path(places_file).parent_path());
+  std::filesystem::remove(places_file);
+  const wheelchair_core::OccupancyMap truth = wheelchair_core::loadMap(world_file);
+  Pose2D origin;  // where the odometry (and so the SLAM's map frame) started
+  ASSERT_TRUE(ros::param::get("/simulator/initial_x", origin.x));
+  ASSERT_TRUE(ros::param::get("/simulator/initial_y", origin.y));
+  ASSERT_TRUE(ros::param::get("/simulator/initial_yaw", origin.yaw));
+
+  std::mutex map_mutex;
+  nav_msgs::OccupancyGrid::ConstPtr last_map;
+  ros::Subscriber map_sub = nh.subscribe<nav_msgs::OccupancyGrid>(
+      "/map", 1, [&](const nav_msgs::OccupancyGrid::ConstPtr& m) {
+        std::lock_guard<std::mutex> lock(map_mutex);
+        last_map = m;
+      });
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  std::string error;
+  ASSERT_TRUE(buffer.canTransform("map", "base_link", ros::Time(0), ros::Duration(60.0), &error))
+      << "the SLAM nodelet never published map -> odom: " << error;
+
+  wheelchair_test_drive::SimDrive drive(kRoute, kFinalYaw);
+  std::vector<Pose2D> truth_poses;
+  ros::Subscriber truth_sub = nh.subscribe<nav_msgs::Odometry>(
+      "/sim/ground_truth", 10, [&](const nav_msgs::Odometry::ConstPtr& m) {
+        truth_poses.push_back(wheelchair_ros::toPose2D(m->pose.pose));
+      });
+  const ros::WallTime start = ros::WallTime::now();
+  while (ros::ok() && !drive.done() && !drive.collided() && drive.simSeconds() < kDriveLimit) {
+    ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.01));
+  }
+  const double wall_s = (ros::WallTime::now() - start).toSec();
+  ASSERT_FALSE(drive.collided()) << "the chair touched an obstacle";
+  ASSERT_TRUE(drive.done()) << "the drive did not finish within " << kDriveLimit << " s simulated";
+
+  // Let the chair stand: the last scans are mapped and /map is republished (map_period 2 s).
+  const ros::Time stopped = ros::Time::now();
+  while (ros::ok() && (ros::Time::now() - stopped).toSec() < 5.0)
+    ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.01));
+  ASSERT_FALSE(truth_poses.empty());
+  const Pose2D true_end = truth_poses.back();
+
+  // The pose: SLAM vs truth, in the world frame; the odometry's, for comparison.
+  const Pose2D slam_end = wheelchair_core::compose(
+      origin,
+      wheelchair_ros::toPose2D(buffer.lookupTransform("map", "base_link", ros::Time(0)).transform));
+  const Pose2D odom_end = wheelchair_core::compose(
+      origin, wheelchair_ros::toPose2D(
+                  buffer.lookupTransform("odom", "base_link", ros::Time(0)).transform));
+  const double slam_error = std::hypot(slam_end.x - true_end.x, slam_end.y - true_end.y);
+  const double odom_error = std::hypot(odom_end.x - true_end.x, odom_end.y - true_end.y);
+  EXPECT_LT(slam_error, 0.10);
+  EXPECT_LT(slam_error, odom_error) << "the SLAM corrects the odometry's drift";
+  EXPECT_LT(std::abs(wheelchair_core::angleDifference(slam_end.yaw, true_end.yaw)), 0.05);
+
+  nav_msgs::OccupancyGrid::ConstPtr map;
+  {
+    std::lock_guard<std::mutex> lock(map_mutex);
+    map = last_map;
+  }
+  ASSERT_TRUE(map) << "no /map from the SLAM nodelet";
+  EXPECT_EQ(map->header.frame_id, "map");
+  const wheelchair_core::OccupancyMap built =
+      inWorldFrame(wheelchair_ros::fromOccupancyGrid(*map), truth, origin);
+  const wheelchair_mapping::test::Accuracy a = wheelchair_mapping::test::compare(built, truth);
+  std::cout << "sim slam: drive " << drive.simSeconds() << " s simulated, " << wall_s << " s wall; "
+            << a.correct << " / " << a.observed << " observed cells correct (" << 100 * a.fraction()
+            << " %), thickest wall " << a.max_wall_run << " cells, farthest off a wall "
+            << a.max_spill << " cells; end pose error SLAM " << slam_error << " m, odometry "
+            << odom_error << " m\n";
+  RecordProperty("observed_cells", a.observed);
+  RecordProperty("correct_percent", std::to_string(100 * a.fraction()));
+  RecordProperty("max_spill_cells", a.max_spill);
+  RecordProperty("slam_end_error_m", std::to_string(slam_error));
+  RecordProperty("odometry_end_error_m", std::to_string(odom_error));
+  RecordProperty("drive_wall_seconds", std::to_string(wall_s));
+  EXPECT_GT(a.observed, 8000) << "living room and kitchen should be largely observed";
+  EXPECT_GE(a.fraction(), 0.98);
+
+  // A place named at the chair's pose, into a places file that does not exist yet.
+  ros::param::set("/slam/places_file", places_file);
+  wheelchair_msgs::SavePlace place;
+  place.request.name = "Kitchen window";
+  place.request.room = "kitchen";
+  ASSERT_TRUE(ros::service::waitForService("/slam/save_place", ros::Duration(10.0)));
+  ASSERT_TRUE(ros::service::call("/slam/save_place", place));
+  EXPECT_TRUE(place.response.success) << place.response.message;
+  const std::vector<wheelchair_hmi::Place> places = wheelchair_hmi::loadPlaces(places_file);
+  ASSERT_EQ(places.size(), 1u);
+  EXPECT_EQ(places[0].name, "kitchen_window");
+  EXPECT_EQ(places[0].room, "kitchen");
+  const Pose2D saved = wheelchair_core::compose(origin, places[0].pose);
+  EXPECT_LT(std::hypot(saved.x - true_end.x, saved.y - true_end.y), 0.10);
+  ASSERT_TRUE(ros::service::call("/slam/save_place", place));
+  EXPECT_FALSE(place.response.success) << "a second place of the same name is refused";
+
+  std_srvs::Trigger save;
+  ASSERT_TRUE(ros::service::call("/slam/save_map", save));
+  EXPECT_TRUE(save.response.success) << save.response.message;
+  const wheelchair_core::OccupancyMap file = wheelchair_core::loadMap(save_dir + "/map.yaml");
+  EXPECT_GT(file.width, 0);
+  for (const char* name : {"trajectory.csv", "graph.graph", "graph.scans"})
+    EXPECT_TRUE(std::filesystem::exists(save_dir + "/" + name)) << name;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_sim_slam");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
