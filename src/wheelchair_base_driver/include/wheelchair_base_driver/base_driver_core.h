@@ -227,6 +227,7 @@ class BaseDriverCore {
   std::uint16_t mc_faults_ = 0;
   wheelchair_can::SequenceTracker encoder_sequence_;
   double encoder_check_left_since_ = NAN, encoder_check_right_since_ = NAN;
+  double overspeed_since_ = NAN;  ///< since when the speed is within max_speed
   double last_left_angle_ = 0.0, last_right_angle_ = 0.0;
 
   wheelchair_can::protocol::TorqueCommand last_sent_;
