@@ -7,6 +7,8 @@ wheelchair`); initializes the localizer (rviz's 2D Pose Estimate, or --global), 
 destination like a one-switch rider (scripted /switch presses on the HMI's group scanning),
 drives there, renders rviz off-screen and writes into --out:
   overview.png, chair.png   rviz snapshots: map, particles, plan, true trajectory; close-up
+  display_*.png             the rider's display (1024x768) scanning, driving, arrived, stopped
+                            by the rider (tools/demo_display.py)
   report.md                 what happened: presses, scan steps, time, final error, figures
   tf_tree.txt               the tf tree as seen by a listener
   logs/                     one log per process (+ ROS's own logs in logs/ros)
@@ -37,6 +39,8 @@ from wheelchair_test.harness import (  # noqa: E402
     ProcessError, Processes, Rider, RiderError, places, stack, wait_for_service)
 from wheelchair_test.harness import start_master as start_master_of  # noqa: E402
 
+import demo_display  # noqa: E402  (beside this file)
+
 STARTUP_TIMEOUT = 40.0  # [s] for a node to show its first output (loaded machine)
 CAN_PORTS = (47190, 47191)  # UDP ports of the demo's CAN bus (driver, motors): not the tests'
 DRIVE_TIMEOUT = 90.0  # [wall s] for the drive to the destination
@@ -57,6 +61,7 @@ class Demo:
         self.node = None  # rospy is initialized once the master is up
         self.tf_buffer = None
         self.rider = None  # the one-switch rider, once the chair is up
+        self.display = None  # the rider's display (demo_display.py)
 
     def wait_for(self, what, condition, process_names=(), timeout=STARTUP_TIMEOUT):
         """Polls `condition()` until true; fails early if one of the named processes died."""
@@ -237,7 +242,7 @@ def write_report(demo):
         "",
         "![chair at the goal](chair.png)",
         "",
-    ]
+    ] + demo_display.report_lines(demo)
     (demo.out / "report.md").write_text("\n".join(lines))
     return "report.md"
 
@@ -302,11 +307,16 @@ STEPS = [
     ("ROS master", start_master),
     ("simulator", start_simulator),
     ("chair", start_chair),
+    ("rider's display", demo_display.start_display),
     ("localization", initialize),
+    ("display: scanning", demo_display.shot_scanning),
     ("destination", choose_destination),
+    ("display: driving", demo_display.shot_driving),
     ("drive", drive),
+    ("display: arrived", demo_display.shot_arrived),
     ("rviz snapshots", take_snapshots),
     ("tf tree", dump_tf_tree),
+    ("display: stopped by the rider", demo_display.shot_stopped),
     ("report", write_report),
 ]
 
@@ -319,7 +329,7 @@ def run(demo):
         print(f"[demo] {name} ...", flush=True)
         try:
             result = step(demo)
-        except (DemoError, ProcessError, RiderError) as error:
+        except (DemoError, ProcessError, RiderError, demo_display.DemoDisplayError) as error:
             raise DemoError(f"step '{name}' failed: {error}") from None
         print(f"[demo] {name}: {result} [{time.monotonic() - started:.1f} s]", flush=True)
         done.append((name, result))
@@ -366,6 +376,7 @@ def main():
     finally:
         if demo.node is not None:
             rospy.signal_shutdown("demo finished")
+        demo_display.stop_display(demo)
         demo.processes.stop_all()
     summary = (f"Demo ({time.monotonic() - started:.0f} s, world '{args.world}'): started "
                + "; ".join(result for _, result in done)

@@ -60,6 +60,13 @@ add_deploy_files() {
   install -D -m 644 "$ROOT/deploy/wheelchair.default" "$stage/etc/default/wheelchair"
   install -D -m 755 "$ROOT/deploy/wheelchair-up" "$stage$PREFIX/lib/wheelchair/wheelchair-up"
   install -D -m 755 "$ROOT/deploy/can-up" "$stage$PREFIX/lib/wheelchair/can-up"
+  install -D -m 755 "$ROOT/deploy/netns-up" "$stage$PREFIX/lib/wheelchair/netns-up"
+  install -D -m 755 "$ROOT/deploy/check-isolation" "$stage$PREFIX/lib/wheelchair/check-isolation"
+  install -D -m 644 "$ROOT/deploy/wheelchair-netns.service" \
+    "$stage/lib/systemd/system/wheelchair-netns.service"
+  install -D -m 644 "$ROOT/deploy/wheelchair-display.service" \
+    "$stage/lib/systemd/system/wheelchair-display.service"
+  install -D -m 755 "$ROOT/deploy/display-up" "$stage$PREFIX/lib/wheelchair/display-up"
   install -D -m 644 "$ROOT/deploy/README.md" "$stage/usr/share/doc/$NAME/README.md"
   install -D -m 644 "$ROOT/README.md" "$stage/usr/share/doc/$NAME/README.project.md"
 }
@@ -114,7 +121,8 @@ Description: autonomous wheelchair stack (ROS 1 nodelets, MRPT) under $PREFIX
  driver, safety supervisor and one-switch HMI in one nodelet process
  (rosrun wheelchair_bringup wheelchair CONFIG), the simulator and test worlds.
  Built for a generic $arch CPU$( [ "$arch" = amd64 ] && echo " (x86-64 baseline: SSE2, no AVX)").
- Boot service wheelchair.service is shipped but not enabled:
+ Boot services wheelchair.service (the chair) and wheelchair-display.service (the
+ rider's screen, a cage kiosk on tty1) are shipped but not enabled:
  systemctl enable --now wheelchair (config: /etc/default/wheelchair).
 EOF
   echo "/etc/default/wheelchair" > "$pkgroot/DEBIAN/conffiles"

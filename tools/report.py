@@ -14,6 +14,12 @@ test/table2/flat_pairs.yaml (test/table2/table2_protocol.py), and writes into --
   kld_bench.json       `bench/kld/run` (the KLD package's benchmark) for Table 1
   logs/                one log per process
 Exit 0 when every run reached its goal and both means beat the paper, else 1.
+
+--cpu-quota 15: the chair process confined to 15 % of one core (cgroup v1 cpu controller, as
+root; the deployed unit's CPUQuota=15%), the legacy-PC budget, in periods of --cpu-period-ms
+(default 10, the unit's CPUQuotaPeriodSec=10ms: with the default 100 ms period a burst of work
+uses the period's 15 ms and every thread then waits 85 ms, past the motor controller's 100 ms
+command watchdog); runs.json and report.md then give the quota's throttling and CPU used.
 """
 import argparse
 import json
@@ -97,11 +103,19 @@ def run_protocol(args, out, logs):
     procs = Processes(logs)
     records = []
     bringup_copy = None
+    quota = None
     try:
         start_master(procs, rosout=True, use_sim_time=True, export=True)
         bringup_copy = table2_stack.start(
             procs, args.bringup or table2_stack.default_config(),
             ROOT / "test" / "worlds" / "flat.yaml", args.speed, pairs[0]["start"], args.nice)
+        if args.cpu_quota:
+            from wheelchair_test.harness.cpu_quota import CpuQuota
+
+            quota = CpuQuota(procs.get("chair").pid, args.cpu_quota,
+                             period_us=int(args.cpu_period_ms * 1000))
+            print(f"chair process confined to {args.cpu_quota:g} % of one core "
+                  f"(period {args.cpu_period_ms:g} ms)", flush=True)
         rospy.init_node("table2_report", disable_signals=True)
         runner = protocol.Table2Runner(wall_scale=args.wall_scale)
         runner.check_processes = procs.check
@@ -132,6 +146,9 @@ def run_protocol(args, out, logs):
                     print("  " + problem, flush=True)
             records.append(record)
     finally:
+        if quota is not None:
+            args.quota_stats = quota.stats()
+            quota.close()
         procs.stop_all()
         if bringup_copy is not None:
             os.unlink(bringup_copy)
@@ -176,6 +193,11 @@ def main():
     parser.add_argument("--wall-scale", type=float, default=1.0,
                         help="multiplies every wall-clock timeout (loaded machine)")
     parser.add_argument("--bringup", help="bring-up file (default: chair_sim.yaml)")
+    parser.add_argument("--cpu-quota", type=float, default=None, metavar="PERCENT",
+                        help="confine the chair process to PERCENT of one core (root)")
+    parser.add_argument("--cpu-period-ms", type=float, default=10.0,
+                        help="the quota's period (cfs_period_us), the unit's CPUQuotaPeriodSec; "
+                             "100 (the kernel's and systemd's default) starves the motor watchdog")
     parser.add_argument("--no-snapshots", dest="snapshots", action="store_false")
     parser.add_argument("--no-kld-bench", dest="kld_bench", action="store_false")
     parser.add_argument("--kld-bench-timeout", type=float, default=2400.0)
@@ -199,6 +221,7 @@ def main():
         finished = [r for r in records if "mse_rc_cm2" in r]
         (out / "runs.json").write_text(json.dumps(
             {"world": world, "speed": args.speed, "nice": args.nice, "wall_time_s": wall,
+             "cpu_quota": getattr(args, "quota_stats", None),
              "runs": records, "summary": protocol.summarize(finished)}))
     bench_rows, bench_problem = (kld_bench(out, logs, args.kld_bench_timeout) if args.kld_bench
                                  else (None, "not run (--no-kld-bench)"))
@@ -207,6 +230,15 @@ def main():
     figures.overview_figure(records, map_file, out / "overview.png")
     ok = figures.write_markdown(records, bench_rows, bench_problem, out / "report.md",
                                 speed=args.speed, nice=args.nice, wall_time_s=wall)
+    stats = getattr(args, "quota_stats", None)
+    if stats:
+        reached = sum(r.get("outcome") == "goal_reached" for r in records)
+        used = "n/a" if stats["used_percent"] is None else f"{stats['used_percent']:.1f} %"
+        with open(out / "report.md", "a") as f:
+            f.write(f"\n**CPU quota** {stats['quota_percent']:g} % of one core on the chair "
+                    f"process: {reached}/{len(records)} goals reached; CPU used {used} over "
+                    f"{stats['wall_s']:.0f} s; throttled in {stats['throttled_periods']} of "
+                    f"{stats['periods']} periods ({stats['throttled_s']:.1f} s).\n")
     print((out / "report.md").read_text())
     print(f"report written to {out}")
     return 0 if ok else 1

@@ -80,7 +80,7 @@ class Display:
         self.name, self.size = name, size
         self.env_file = tempfile.mktemp(prefix=f"display_{name}_", suffix=".env")
         self.out_dir = out_dir or tempfile.mkdtemp(prefix=f"display_{name}_")
-        self.status, self.said, self.view = "", [], None
+        self.status, self.said, self.view, self.views = "", [], None, []
         self.statuses = []
         self.subs = [
             rospy.Subscriber(f"/{name}/status", String, self._on_status),
@@ -105,6 +105,15 @@ class Display:
 
     def _on_view(self, msg):
         self.view = View(msg.data)
+        self.views.append((time.monotonic(), self.view))
+        del self.views[:-200]
+
+    def views_since(self, since):
+        """The views published from monotonic time `since` on, and the one current before it: a
+        screenshot taken meanwhile shows a frame drawn with one of them (while the chair drives,
+        the view follows it frame by frame)."""
+        before = [v for t, v in self.views if t < since][-1:]
+        return before + [v for t, v in self.views if t >= since]
 
     def wait_up(self, timeout=30.0):
         """True once the X server is known and the node has drawn its first view."""

@@ -45,8 +45,10 @@ class DisplayCarer(unittest.TestCase):
         return pad + prompt_h / 4, prompt_y + prompt_h / 2
 
     def tools_open(self):
+        """The tools' bordered controls in the left column (the chair's HMI, scanning, puts its
+        list of rooms there too, without borders)."""
         time.sleep(0.5)
-        return self.d.view.map_region[0] > 0  # the tools take the left column
+        return self.d.view.map_region[0] > 0 and len(self.controls("tools_open")) >= 3
 
     def hold_carer(self, seconds):
         d = self.d

@@ -18,6 +18,7 @@ from display_harness import THEMES, Display, colour_mask  # noqa: E402
 from display_world import (REMAPS, START, back_plate, go_button, place_pose, place_xy,  # noqa
                            room_point, test_output)
 from wheelchair_test.harness import Rider as Scenario  # noqa: E402
+from wheelchair_test.harness.rider import READY_SERVICES  # noqa: E402
 
 DWELL = 1.5  # the display's default dwell time [s]
 
@@ -44,7 +45,7 @@ class DisplayPointer(unittest.TestCase):
     def test_click_one_place_then_dwell_on_another_and_drive_there(self):
         s, d = self.s, self.d
         self.assertTrue(d.wait_up(60.0), f"the display did not start: see {self.out}")
-        self.assertEqual(s.wait_ready(), "")
+        self.assertEqual(s.wait_ready(services=READY_SERVICES + ("/route_check/make_plan",)), "")
         self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
         self.assertTrue(d.wait_status(lambda t: t == "Choose where to go."), d.status)
 

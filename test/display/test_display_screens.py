@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """The rider's display in each state, at 1024x768 (dark theme) and 1920x1080 (light theme), with
 the real display node, simulator and chair: before localization, scanning a room, scanning a
-place (the HMI's state from a test publisher of wheelchair_msgs/HmiState), confirming (a place
+place (the chair's own HMI scanning, its /hmi/state, the rider's presses on /switch), the HMI's
+confirmation lapsing, confirming (a place
 chosen with the pointer, its route checked), driving, stopped by the rider, stopped by the
 supervisor (a typed SafetyStatus from the test publisher), refused (a spot the chair cannot
-stand on). Each screenshot is measured: the map region shows the map, the chair's footprint is
+stand on: the chair's own route check refuses it). Each screenshot is measured: the map region shows the map, the chair's footprint is
 where the simulator's truth puts it, the highlighted item is marked, the status line's letters
 are at least as tall as at 48 px and its contrast is at least 7:1."""
 import math
@@ -23,6 +24,7 @@ from display_harness import (THEMES, Display, colour_mask, footprint_offset, loa
 from display_world import (FOOTPRINT, REMAPS, SAFETY_TOPIC, START, go_button, place_xy,  # noqa
                            places, room_box, room_point, test_output)
 from wheelchair_test.harness import Rider as Scenario  # noqa: E402
+from wheelchair_test.harness.rider import READY_SERVICES  # noqa: E402
 from display_world import WORLDS  # noqa: E402
 from wheelchair_msgs.msg import HmiState, SafetyStatus  # noqa: E402
 
@@ -34,15 +36,21 @@ class DisplayScreens(unittest.TestCase):
         self.shots, places_copy = test_output("display_shots",
                                               os.environ.get("WHEELCHAIR_DISPLAY_SHOTS"))
         self.grid = load_map(f"{WORLDS}/flat.yaml")
-        self.hmi = rospy.Publisher("/hmi/state", HmiState, queue_size=1, latch=True)
+        self.hmi_state, self.hmi_count = None, 0
+        self.hmi = rospy.Subscriber("/hmi/state", HmiState, self._on_hmi)
         self.safety = rospy.Publisher(SAFETY_TOPIC, SafetyStatus, queue_size=1, latch=True)
         self.displays = [
             Display("display_small", (1024, 768), places_copy, {"theme": "dark"}, REMAPS),
             Display("display_large", (1920, 1080), places_copy, {"theme": "light"}, REMAPS)]
 
     def tearDown(self):
+        self.hmi.unregister()
         for d in self.displays:
             d.stop()
+
+    def _on_hmi(self, msg):
+        self.hmi_state = msg
+        self.hmi_count += 1
 
     # ---- helpers ------------------------------------------------------------------------------
     def shoot(self, state, chair_shown=True):
@@ -51,29 +59,33 @@ class DisplayScreens(unittest.TestCase):
         for d in self.displays:
             theme = THEMES["dark" if d.size[0] == 1024 else "light"]
             truth_before = self.s.truth[1:4]
+            taken = time.monotonic()
             image = d.screenshot(os.path.join(self.shots, f"{state}_{d.size[0]}x{d.size[1]}.png"))
             truth_after = self.s.truth[1:4]
             where = f"{state} at {d.size}"
-            shown = map_shows_map(image, d.view, self.grid, theme)
+            # The frame on the screen was drawn with one of the views published meanwhile.
+            view, shown = max(((v, map_shows_map(image, v, self.grid, theme))
+                               for v in d.views_since(taken - 0.5)),
+                              key=lambda c: c[1]["occupied"]["wall"] + c[1]["free"]["floor"])
             walls, floor = shown["occupied"]["wall"], shown["free"]["floor"]
             self.assertGreater(walls, 0.8, f"{where}: walls shown as walls {shown}")
             self.assertLess(shown["occupied"]["floor"], 0.03, f"{where}: walls shown as floor {shown}")
             self.assertGreater(floor, 0.5, f"{where}: floor shown as floor {shown}")
             self.assertLess(shown["free"]["wall"], 0.03, f"{where}: floor shown as walls {shown}")
-            u, v = d.view.to_screen(*truth_before[:2])
-            x0, y0, w, h = d.view.map_region
+            u, v = view.to_screen(*truth_before[:2])
+            x0, y0, w, h = view.map_region
             in_view = x0 + 20 < u < x0 + w - 20 and y0 + 20 < v < y0 + h - 20
             if self.localized and in_view:
                 moved = math.hypot(truth_after[0] - truth_before[0], truth_after[1] - truth_before[1])
                 pose = [(a + b) / 2 for a, b in zip(truth_before, truth_after)]
-                offset, share = footprint_offset(image, d.view, pose, FOOTPRINT, theme)
+                offset, share = footprint_offset(image, view, pose, FOOTPRINT, theme)
                 # A few pixels: the localizer's estimate against the truth, and motion meanwhile.
-                limit = 3.0 + 0.02 * d.view.scale + moved * d.view.scale
+                limit = 3.0 + 0.02 * view.scale + moved * view.scale
                 self.assertLess(offset, limit, f"{where}: footprint {offset:.1f} px off")
                 self.assertGreater(share, 0.6, f"{where}: footprint fill {share:.2f}")
                 rospy.loginfo("display %s: footprint %.1f px off (limit %.1f), fill %.2f", where,
                               offset, limit, share)
-            band = status_band(image, d.view)
+            band = status_band(image, view)
             cap, cap48, ratio = status_text_measures(band, d.status[0], theme)
             self.assertGreaterEqual(cap, cap48 - 1, f"{where}: status letters {cap} px < {cap48}")
             self.assertGreaterEqual(ratio, 7.0, f"{where}: status contrast {ratio:.1f}")
@@ -84,12 +96,28 @@ class DisplayScreens(unittest.TestCase):
             images.append(image)
         return images
 
-    def scan(self, state, items, highlighted, room="", place=""):
-        msg = HmiState(state=state, items=items, highlighted=highlighted, room=room, place=place,
-                       time_left=1.5, step_time=2.0)
-        msg.header.stamp = rospy.Time.now()
-        self.hmi.publish(msg)
-        time.sleep(1.0)
+    def hmi_shows(self, state, item):
+        m = self.hmi_state
+        return m is not None and m.state == state and 0 <= m.highlighted < len(m.items) and \
+            m.items[m.highlighted] == item
+
+    def wait_hmi(self, state, item, timeout=90.0):
+        self.assertTrue(self.s.wait(lambda: self.hmi_shows(state, item), timeout),
+                        f"the HMI never highlighted {item}: {self.hmi_state}")
+
+    def shoot_highlight(self, name, state, item, chair_shown=True, tries=3):
+        """Photographs both displays while the chair's HMI highlights `item` (in `state`); when
+        the highlight moved on before both were taken, again at the item's next turn."""
+        for _ in range(tries):
+            self.wait_hmi(state, item)
+            seen = self.hmi_count
+            time.sleep(0.3)  # both displays draw it
+            images = self.shoot(name, chair_shown)
+            if self.hmi_count == seen:
+                return images
+            rospy.logwarn("display screens: the highlight moved on during %s; again", name)
+            self.assertTrue(self.s.wait(lambda: not self.hmi_shows(state, item), 30.0))
+        self.fail(f"{name}: the HMI's highlight of {item} moved on during every screenshot")
 
     def both(self, status_test, timeout=30.0):
         for d in self.displays:
@@ -110,7 +138,7 @@ class DisplayScreens(unittest.TestCase):
         self.localized = False
         for d in self.displays:
             self.assertTrue(d.wait_up(60.0), f"{d.name} did not start: see {d.out_dir}")
-        self.assertEqual(s.wait_ready(), "")
+        self.assertEqual(s.wait_ready(services=READY_SERVICES + ("/route_check/make_plan",)), "")
         self.both(lambda t: t == "I don't know where the chair is yet.")
         self.shoot("not_localized")
 
@@ -119,9 +147,12 @@ class DisplayScreens(unittest.TestCase):
         self.both(lambda t: t == "Choose where to go.")
 
         # Scanning a room: the kitchen's area framed (thick, flashing), its name on a filled plate.
-        rooms = ["living_room", "kitchen", "bathroom", "bedroom", "study", "guest_room"]
-        self.scan(HmiState.SCANNING_ROOMS, rooms, 1)
-        for d, image in zip(self.displays, self.shoot("scanning_room")):
+        # The chair's HMI offers the rooms largest first, ties in the file's order.
+        rooms = ["living_room", "kitchen", "study", "bathroom", "guest_room", "bedroom"]
+        self.wait_hmi(HmiState.SCANNING_ROOMS, "kitchen")
+        self.assertEqual(list(self.hmi_state.items), rooms)
+        for d, image in zip(self.displays,
+                            self.shoot_highlight("scanning_room", HmiState.SCANNING_ROOMS, "kitchen")):
             theme = THEMES["dark" if d.size[0] == 1024 else "light"]
             x0, y0, x1, y1 = room_box("kitchen")
             frame = np.zeros(image.shape[:2], dtype=bool)
@@ -141,20 +172,32 @@ class DisplayScreens(unittest.TestCase):
             self.assertEqual(self.highlight_near(image, d, ((other[0] + other[2]) / 2,
                                                             (other[1] + other[3]) / 2), theme, 30), 0)
 
-        # Scanning a place: kitchen_door's plate highlighted, the other places' not.
+        # Scanning a place: the rider presses on the kitchen; its places are offered in the
+        # file's order; stove's plate highlighted, sink's and kitchen_door's not.
+        self.wait_hmi(HmiState.SCANNING_ROOMS, "kitchen")
+        s.press()
         kitchen = [p["name"] for p in places() if p["room"] == "kitchen"]
-        self.scan(HmiState.SCANNING_PLACES, kitchen, kitchen.index("kitchen_door"), room="kitchen")
-        for d, image in zip(self.displays, self.shoot("scanning_place", chair_shown=False)):
+        self.wait_hmi(HmiState.SCANNING_PLACES, "sink")
+        self.assertEqual(list(self.hmi_state.items), kitchen)
+        for d, image in zip(self.displays, self.shoot_highlight(
+                "scanning_place", HmiState.SCANNING_PLACES, "stove", chair_shown=False)):
             theme = THEMES["dark" if d.size[0] == 1024 else "light"]
-            self.assertGreater(self.highlight_near(image, d, place_xy("kitchen_door"), theme,
+            self.assertGreater(self.highlight_near(image, d, place_xy("stove"), theme,
                                                    0.3 * d.size[1]),
-                               600, f"{d.size}: kitchen_door not highlighted")
-            for name in ("sink", "stove"):
+                               600, f"{d.size}: stove not highlighted")
+            for name in ("sink", "kitchen_door"):
                 self.assertEqual(self.highlight_near(image, d, place_xy(name), theme, 6), 0,
                                  f"{d.size}: {name} looks highlighted")
 
+        # The HMI's confirmation: a press on a kitchen place; unconfirmed, it lapses back to the
+        # rooms (confirm_timeout, 8 s), where the pointer chooses freely again.
+        s.press()
+        self.assertTrue(s.wait(lambda: self.hmi_state.state == HmiState.CONFIRMING, 10.0))
+        self.assertIn(self.hmi_state.place, kitchen)
+        self.assertTrue(s.wait(lambda: self.hmi_state.state == HmiState.SCANNING_ROOMS, 30.0),
+                        f"the confirmation did not lapse: {self.hmi_state}")
+
         # Confirming: the pointer opens the kitchen and clicks kitchen_door; the route check answers.
-        self.scan(HmiState.IDLE, [], -1)
         for d in self.displays:
             self.click_world(d, *room_point("kitchen"))
         time.sleep(1.0)

@@ -3,34 +3,18 @@
 returns that are not in the map within its stop distance ahead along the path and stops the
 chair before contact (the simulator's collision check, which knows the person's disc, stays
 clear), with the reason told to the rider."""
-import math
 import sys
 import unittest
 
 import rospy
 import rostest
-from wheelchair_msgs.msg import SafetyStatus
 
-from wheelchair_test.harness import Rider, describe_stop
+from wheelchair_test.harness import Rider, point_ahead
 
 START = (3.0, 2.2, 0.0)  # living_centre
 GOAL = "kitchen_door"
 AHEAD = 1.9  # [m] along the plan from the chair's axle centre (1.6 m in front of its front)
 RADIUS = 0.15  # [m] a person seen from above
-
-
-def point_ahead(plan, x, y, distance):
-    """The point `distance` along the plan from the vertex nearest to (x, y)."""
-    points = [(p.pose.position.x, p.pose.position.y) for p in plan.poses]
-    i = min(range(len(points)), key=lambda k: math.hypot(points[k][0] - x, points[k][1] - y))
-    walked = 0.0
-    for a, b in zip(points[i:], points[i + 1:]):
-        step = math.hypot(b[0] - a[0], b[1] - a[1])
-        if walked + step >= distance:
-            f = (distance - walked) / step
-            return a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])
-        walked += step
-    return None
 
 
 class Person(unittest.TestCase):
@@ -41,19 +25,7 @@ class Person(unittest.TestCase):
         _, x, y, _, v, _ = s.truth
         person = point_ahead(plan, x, y, AHEAD)
         self.assertIsNotNone(person, "plan too short for the test")
-        t_person = rospy.get_time()
-        self.assertTrue(s.add_obstacle(person[0], person[1], RADIUS, 0.0).success)
-        self.assertTrue(s.wait(lambda: s.first_stop(t_person), 30.0),
-                        "no safety stop: " + s.describe(t_person))
-        _, stop = s.first_stop(t_person)
-        self.assertEqual(stop.reason, SafetyStatus.OBSTACLE, describe_stop(stop))
-        self.assertIn("in the way", stop.sentence)
-        self.assertTrue(s.wait(s.at_rest, 30.0), "still moving: " + s.describe(t_person))
-        s.sim_sleep(1.0)
-        self.assertFalse(s.collided, "the chair touched the person: " + s.describe(t_person))
-        _, fx, fy, fyaw, _, _ = s.truth
-        front = (fx + 0.30 * math.cos(fyaw), fy + 0.30 * math.sin(fyaw))  # footprint front, chair.yaml
-        gap = math.hypot(person[0] - front[0], person[1] - front[1]) - RADIUS
+        t_person, _, gap = s.stops_for_person(self, person, RADIUS, rest_wall_timeout=30.0)
         self.assertGreater(gap, 0.05, "stopped too close")
         self.assertTrue(s.wait(lambda: s.announced("in the way", t_person), 10.0),
                         "the rider was not told: " + s.describe(t_person))

@@ -220,6 +220,10 @@ OutputReference PathTracker::governedReference(double dt, double error) {
   const double span = config_.governor_hard_error - config_.governor_soft_error;
   double target = std::clamp((config_.governor_hard_error - error) / span, 0.0, 1.0);
   target = std::min(target, last_saturation_ < 1.0 ? last_saturation_ : 1.0);
+  if (std::isfinite(speed_limit_)) {  // the supervisor's speed limit caps the time rate
+    const double speed = phases_.front().trajectory->at(phase_time_).velocity.norm();
+    if (speed > 1e-3) target = std::min(target, std::max(0.0, speed_limit_) / speed);
+  }
   if (!rate_initialized_) {
     rate_ = target;
     rate_initialized_ = true;

@@ -50,5 +50,41 @@ TEST(RayTrace, RandomSegmentsAreContiguousAndExact) {
   }
 }
 
+// The digital line between two cells: starts and ends there, 8-connected, one cell per step of
+// the major axis, and every cell within half a cell (across the major axis) of the segment
+// between the two cell centres.
+TEST(RayTrace, LineCellsAreOnePerMajorAxisStepAndNearTheLine) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> u(-30, 30);
+  for (int k = 0; k < 500; ++k) {
+    const int x0 = u(rng), y0 = u(rng), x1 = u(rng), y1 = u(rng);
+    std::vector<Cell> cells;
+    int lasts = 0;
+    traceLineCells(x0, y0, x1, y1, [&](int ix, int iy, bool last) {
+      cells.push_back({ix, iy});
+      lasts += last;
+    });
+    const int dx = x1 - x0, dy = y1 - y0;
+    ASSERT_EQ(cells.size(), static_cast<size_t>(std::max(std::abs(dx), std::abs(dy)) + 1));
+    ASSERT_EQ(lasts, 1);
+    ASSERT_EQ(cells.front().x, x0);
+    ASSERT_EQ(cells.front().y, y0);
+    ASSERT_EQ(cells.back().x, x1);
+    ASSERT_EQ(cells.back().y, y1);
+    const bool x_major = std::abs(dx) >= std::abs(dy);
+    for (size_t i = 0; i < cells.size(); ++i) {
+      if (i > 0) {
+        ASSERT_LE(std::abs(cells[i].x - cells[i - 1].x), 1);
+        ASSERT_LE(std::abs(cells[i].y - cells[i - 1].y), 1);
+      }
+      if (dx == 0 && dy == 0) continue;
+      // Where the segment is at this cell's major coordinate, the minor one is within 0.5.
+      const double t = x_major ? double(cells[i].x - x0) / dx : double(cells[i].y - y0) / dy;
+      const double minor = x_major ? y0 + t * dy : x0 + t * dx;
+      ASSERT_LE(std::abs((x_major ? cells[i].y : cells[i].x) - minor), 0.5 + 1e-9);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace wheelchair_core

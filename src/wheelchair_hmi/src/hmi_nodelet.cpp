@@ -6,7 +6,11 @@
 // (wheelchair_msgs/LocalizationStatus) is told in the localizer's own words.
 // The controller's outcome is read from ~path_status, which names the path it concerns: the end
 // of a path older than the rider's latest command (a goal, a stop) is not this drive's end.
+#include "hmi_state_publisher.h"
+
 #include <wheelchair_hmi/places.h>
+#include <wheelchair_hmi/places_watch.h>
+#include <wheelchair_hmi/scan_state.h>
 #include <wheelchair_hmi/switch_scanner.h>
 #include <wheelchair_msgs/GoToPlace.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
@@ -71,6 +75,8 @@ class HmiNodelet : public nodelet::Nodelet {
     map_frame_ = config.map_frame;
     try {
       scanner_ = std::make_unique<SwitchScanner>(loadPlaces(config.places_file), config.scanner);
+      places_watch_ = std::make_unique<PlacesFileWatch>(config.places_file);
+      scanner_options_ = config.scanner;
     } catch (const std::exception& e) {  // no destinations to offer: refuse to start
       NODELET_FATAL("%s", e.what());
       throw wheelchair_core::ConfigError(getPrivateNodeHandle().getNamespace() + ": " + e.what());
@@ -78,6 +84,7 @@ class HmiNodelet : public nodelet::Nodelet {
     goal_pub_ = nh.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 1);
     stop_pub_ = nh.advertise<std_msgs::Empty>("user_stop", 1);
     announce_pub_ = nh.advertise<std_msgs::String>("hmi/announce", 10, true);
+    state_pub_ = std::make_unique<HmiStatePublisher>(nh);
     marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("hmi/markers", 1, true);
     switch_sub_ = nh.subscribe("switch", 10, &HmiNodelet::onSwitch, this);
     go_to_sub_ = nh.subscribe("hmi/go_to", 1, &HmiNodelet::onGoTo, this);
@@ -98,6 +105,35 @@ class HmiNodelet : public nodelet::Nodelet {
   void onTimer(const ros::TimerEvent&) {
     std::lock_guard<std::mutex> lock(mutex_);
     handle(scanner_->tick(ros::Time::now().toSec()));
+    if (++ticks_ % 10 == 0) reloadPlaces();
+    publishState();
+  }
+
+  /// A changed places file (the carer saved a place on the display) is offered from the next
+  /// room scan on; a choice or a drive under way is not disturbed.
+  void reloadPlaces() {
+    std::string problem;
+    if (auto places = places_watch_->changed(problem)) pending_places_ = std::move(places);
+    if (!problem.empty())
+      NODELET_ERROR("[switch] the places file changed but is not used (the old places stay): %s",
+                    problem.c_str());
+    if (!pending_places_ || scanner_->phase() != SwitchScanner::Phase::kGroups) return;
+    try {
+      auto scanner = std::make_unique<SwitchScanner>(std::move(*pending_places_), scanner_options_);
+      scanner_ = std::move(scanner);
+      NODELET_INFO("[switch] places file read again: %zu places", scanner_->places().size());
+      handle(scanner_->start(ros::Time::now().toSec()));
+    } catch (const std::exception& e) {
+      NODELET_ERROR("[switch] the new places are not used (the old places stay): %s", e.what());
+    }
+    pending_places_.reset();
+  }
+
+  /// /hmi/state when what it shows changed (called after every event and every tick).
+  void publishState() {
+    ScanState state = scanState(*scanner_, ros::Time::now().toSec(), goal_place_);
+    state.sentence = last_sentence_;
+    state_pub_->publish(state);
   }
 
   void onSwitch(const std_msgs::Empty::ConstPtr&) {
@@ -122,7 +158,9 @@ class HmiNodelet : public nodelet::Nodelet {
     goal_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
     command_stamp_ = goal_stamp_;
     goal_pending_ = true;
+    goal_place_ = placeAt(scanner_->places(), wheelchair_ros::toPose2D(msg->pose));
     if (certificate_ && certificate_->header.stamp >= goal_stamp_) answerGoal();
+    publishState();
   }
 
   void onPlan(const wheelchair_msgs::PlanCertificate::ConstPtr& msg) {
@@ -230,6 +268,7 @@ class HmiNodelet : public nodelet::Nodelet {
     if (out.kind == ScanOutput::Kind::kGo) publishGoal(*out.place);
     if (out.kind == ScanOutput::Kind::kStop) stop_pub_.publish(std_msgs::Empty());
     publishMarkers(out);
+    publishState();
   }
 
   void announce(const std::string& text) {
@@ -237,6 +276,8 @@ class HmiNodelet : public nodelet::Nodelet {
     std_msgs::String msg;
     msg.data = text;
     announce_pub_.publish(msg);
+    last_sentence_ = text;
+    publishState();
   }
 
   /// The rider's destination: their command to go on. It releases a latched stop of the
@@ -286,6 +327,13 @@ class HmiNodelet : public nodelet::Nodelet {
 
   std::mutex mutex_;
   std::unique_ptr<SwitchScanner> scanner_;
+  std::unique_ptr<HmiStatePublisher> state_pub_;
+  std::unique_ptr<PlacesFileWatch> places_watch_;
+  std::optional<std::vector<Place>> pending_places_;  ///< read, waiting for the room scan
+  ScannerOptions scanner_options_;
+  unsigned ticks_ = 0;
+  std::string goal_place_;     ///< the place the chair drives to ("" for a spot)
+  std::string last_sentence_;  ///< the last announcement
   std::string map_frame_;
   ros::Publisher goal_pub_, stop_pub_, announce_pub_, marker_pub_;
   ros::Subscriber switch_sub_, go_to_sub_, finished_sub_;

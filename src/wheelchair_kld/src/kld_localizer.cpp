@@ -22,7 +22,14 @@ TPose2D toMrpt(const wheelchair_core::Pose2D& p) { return TPose2D(p.x, p.y, p.ya
 
 KldLocalizer::KldLocalizer(std::shared_ptr<const LocalizationMap> map, const KldParams& params,
                            uint64_t seed)
-    : map_(std::move(map)), params_(params), measurement_(*map_, params_.measurement) {
+    : map_(std::move(map)),
+      params_(params),
+      measurement_(*map_, params_.measurement),
+      fit_model_(*map_, [&] {
+        MeasurementParams m = params.measurement;
+        m.beam_step = params.fit_beam_step;
+        return m;
+      }()) {
   rng_.randomize(static_cast<uint32_t>(seed));
 }
 
@@ -31,6 +38,8 @@ void KldLocalizer::resetRecovery() {
   last_odom_.reset();  // a new set is the pose now: earlier odometry must not move it
   pending_first_update_ = true;
   fit_window_.clear();
+  poor_fits_ = 0;
+  recovering_ = false;
 }
 
 double KldLocalizer::meanFit() const {
@@ -44,14 +53,24 @@ void KldLocalizer::checkFit() {
   fit_window_.push_back(inliers_);
   const size_t window = static_cast<size_t>(std::max(1, params_.fit_window));
   while (fit_window_.size() > window) fit_window_.pop_front();
-  if (fit_window_.size() == window && meanFit() < params_.fit_min_mean) {
+  const bool poor = fit_.inliers + fit_.contradictions >= params_.relocalize_min_echoes &&
+                    fit_.knownFit() < params_.relocalize_max_fit;
+  poor_fits_ = poor ? poor_fits_ + 1 : 0;
+  const bool lost =
+      params_.relocalize_on_mean_fit
+          ? fit_window_.size() == window && meanFit() < params_.fit_min_mean
+          : params_.relocalize_updates > 0 && poor_fits_ >= params_.relocalize_updates;
+  if (lost) {
     ++relocalizations_;
-    initGlobal();
+    initGlobal(params_.relocalize_particles);
+    recovering_ = true;
   }
 }
 
-void KldLocalizer::initGlobal() {
-  const int n = params_.fixed_particles > 0 ? params_.fixed_particles : params_.global_particles;
+void KldLocalizer::initGlobal(int particles) {
+  const int n = params_.fixed_particles > 0 ? params_.fixed_particles
+                : particles > 0             ? particles
+                                            : params_.global_particles;
   particles_.assign(n, Particle());
   for (auto& p : particles_) {
     p.d = map_->sampleFreePose(rng_);
@@ -112,8 +131,13 @@ UpdateResult KldLocalizer::update(const wheelchair_core::Pose2D& odom_pose,
   pending_first_update_ = false;
   normalizeAndEstimate();
   keepPlausibleHypotheses();
-  inliers_ = measurement_.inlierFraction(toMrpt(estimate_.mean), params_.inlier_tolerance);
+  fit_model_.setScan(scan, sensor_pose);
+  fit_ = fit_model_.fitCounts(toMrpt(estimate_.mean), params_.inlier_tolerance);
+  inliers_ = fit_.echoes > 0 ? static_cast<double>(fit_.inliers) / fit_.echoes : 0.0;
+  const int relocalizations_before = relocalizations_;
   checkFit();
+  if (recovering_ && relocalizations_ == relocalizations_before && status().localized())
+    recovering_ = false;
   return UpdateResult::kUpdated;
 }
 
@@ -130,7 +154,13 @@ void KldLocalizer::sampleStep(const TPose2D& odom_from, const TPose2D& odom_to) 
                             : 0.0;
   const bool fixed = params_.fixed_particles > 0;
   const int m_min = fixed ? params_.fixed_particles : params_.min_particles;
-  const int m_max = fixed ? params_.fixed_particles : params_.max_particles;
+  // After a re-localization the set stays within relocalize_particles until localized again:
+  // the spread set would otherwise ask for M_max and stall the node for seconds.
+  const int m_max = fixed ? params_.fixed_particles
+                    : recovering_
+                        ? std::min(params_.max_particles,
+                                   std::max(params_.min_particles, params_.relocalize_particles))
+                        : params_.max_particles;
   const int beams = std::max(1, measurement_.beamCount());
   PoseBins bins(params_.bin_xy, params_.bin_theta);
   std::vector<Particle> next;

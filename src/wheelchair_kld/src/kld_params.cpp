@@ -62,7 +62,12 @@ std::string KldParams::validate() const {
       .inRange("localized_min_inliers", localized_min_inliers, 0.0, 1.0)
       .positive("inlier_tolerance", inlier_tolerance)
       .check(fit_window >= 1, "fit_window must be at least 1")
-      .inRange("fit_min_mean", fit_min_mean, 0.0, 1.0);
+      .inRange("fit_min_mean", fit_min_mean, 0.0, 1.0)
+      .check(fit_beam_step >= 1, "fit_beam_step must be at least 1")
+      .inRange("relocalize_max_fit", relocalize_max_fit, 0.0, 1.0)
+      .check(relocalize_min_echoes >= 1, "relocalize_min_echoes must be at least 1")
+      .check(relocalize_updates >= 0, "relocalize_updates must not be negative (0: off)")
+      .check(relocalize_particles >= 1, "relocalize_particles must be at least 1");
   for (const std::string& nested : {motion.validate(), measurement.validate()})
     c.check(nested.empty(), nested);
   return c.result();
@@ -98,6 +103,12 @@ void readKldParams(wheelchair_core::ConfigReader& r, KldParams& p) {
   r.read("inlier_tolerance", p.inlier_tolerance);
   r.read("fit_window", p.fit_window);
   r.read("fit_min_mean", p.fit_min_mean);
+  r.read("fit_beam_step", p.fit_beam_step);
+  r.read("relocalize_max_fit", p.relocalize_max_fit);
+  r.read("relocalize_min_echoes", p.relocalize_min_echoes);
+  r.read("relocalize_updates", p.relocalize_updates);
+  r.read("relocalize_on_mean_fit", p.relocalize_on_mean_fit);
+  r.read("relocalize_particles", p.relocalize_particles);
 
   MotionNoise& m = p.motion;
   r.read("odom_alpha1", m.alpha1);

@@ -88,6 +88,24 @@ double MeasurementModel::inlierFraction(const mrpt::math::TPose2D& pose, double 
   return echoes > 0 ? static_cast<double>(inliers) / echoes : 0.0;
 }
 
+MeasurementModel::FitCounts MeasurementModel::fitCounts(const mrpt::math::TPose2D& pose,
+                                                        double tolerance) const {
+  const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+  FitCounts f;
+  for (const Beam& b : beams_) {
+    if (b.max_range) continue;
+    ++f.echoes;
+    const int cell =
+        map_.cellIndex(pose.x + c * b.end_x - s * b.end_y, pose.y + s * b.end_x + c * b.end_y);
+    if (cell < 0) continue;
+    if (map_.obstacleDistance()[cell] <= tolerance)
+      ++f.inliers;
+    else if (map_.isFree(cell))
+      ++f.contradictions;
+  }
+  return f;
+}
+
 double MeasurementModel::logBeamModel(const mrpt::math::TPose2D& pose) const {
   const double c = std::cos(pose.phi), s = std::sin(pose.phi);
   const double ox = pose.x + c * sensor_pose_.x - s * sensor_pose_.y;

@@ -35,6 +35,24 @@ TEST(KldParams, TheDefaultsAreValid) {
   EXPECT_EQ(LocalizerNodeConfig().validate(), "");
 }
 
+// Issue 21: the re-localization rule's every threshold is a key of the nodelet (its loader is
+// this one), checked and refused by name.
+TEST(KldParams, TheRelocalizationRuleIsParameterized) {
+  const LocalizerNodeConfig c = load(
+      "{relocalize_max_fit: 0.3, relocalize_min_echoes: 40, relocalize_updates: 3,"
+      " relocalize_on_mean_fit: true, relocalize_particles: 5000, fit_beam_step: 2}");
+  EXPECT_DOUBLE_EQ(c.filter.relocalize_max_fit, 0.3);
+  EXPECT_EQ(c.filter.relocalize_min_echoes, 40);
+  EXPECT_EQ(c.filter.relocalize_updates, 3);
+  EXPECT_TRUE(c.filter.relocalize_on_mean_fit);
+  EXPECT_EQ(c.filter.relocalize_particles, 5000);
+  EXPECT_EQ(c.filter.fit_beam_step, 2);
+  EXPECT_NE(errorOf("{relocalize_max_fit: 1.5}").find("relocalize_max_fit"), std::string::npos);
+  EXPECT_NE(errorOf("{relocalize_updates: -1}").find("relocalize_updates"), std::string::npos);
+  EXPECT_NE(errorOf("{relocalize_particles: 0}").find("relocalize_particles"), std::string::npos);
+  EXPECT_NE(errorOf("{fit_beam_step: 0}").find("fit_beam_step"), std::string::npos);
+}
+
 TEST(KldParams, EveryThresholdIsAParameter) {
   const LocalizerNodeConfig c = load(
       "{fit_min_mean: 0.7, fit_window: 20, kld_epsilon: 0.1, recovery_alpha_slow: 0.002,"

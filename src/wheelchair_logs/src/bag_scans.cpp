@@ -1,3 +1,4 @@
+#include <nav_msgs/Odometry.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/LaserScan.h>
@@ -23,21 +24,35 @@ struct BagScanReader::Impl {
 };
 
 BagScanReader::BagScanReader(const std::string& path, const std::string& scan_topic,
-                             const std::string& fixed_frame)
-    : impl_(std::make_unique<Impl>()), path_(path), fixed_frame_(fixed_frame) {
+                             const std::string& fixed_frame, const std::string& base_frame,
+                             const std::string& odom_topic)
+    : impl_(std::make_unique<Impl>()),
+      path_(path),
+      fixed_frame_(fixed_frame),
+      base_frame_(base_frame) {
   try {
     impl_->bag.open(path, rosbag::bagmode::Read);
   } catch (const rosbag::BagException& e) {
     throw std::runtime_error(path + ": cannot open bag (" + e.what() + ")");
   }
-  rosbag::View tf_view(impl_->bag,
-                       rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static"}));
+  std::vector<std::string> tf_topics{"/tf", "/tf_static"};
+  if (!odom_topic.empty()) tf_topics.push_back(odom_topic);
+  rosbag::View tf_view(impl_->bag, rosbag::TopicQuery(tf_topics));
   const ros::Duration length = tf_view.getEndTime() - tf_view.getBeginTime();
   impl_->tf = std::make_unique<tf2::BufferCore>(length + ros::Duration(10.0));
   for (const rosbag::MessageInstance& m : tf_view) {
     const bool is_static = m.getTopic() == "/tf_static";
     if (auto msg = m.instantiate<tf2_msgs::TFMessage>()) {
       for (const auto& t : msg->transforms) impl_->tf->setTransform(t, "bag", is_static);
+    } else if (auto odom = m.instantiate<nav_msgs::Odometry>()) {
+      geometry_msgs::TransformStamped t;
+      t.header = odom->header;
+      t.child_frame_id = odom->child_frame_id;
+      t.transform.translation.x = odom->pose.pose.position.x;
+      t.transform.translation.y = odom->pose.pose.position.y;
+      t.transform.translation.z = odom->pose.pose.position.z;
+      t.transform.rotation = odom->pose.pose.orientation;
+      impl_->tf->setTransform(t, "bag");
     }
   }
   impl_->scans = std::make_unique<rosbag::View>(impl_->bag, rosbag::TopicQuery(scan_topic));
@@ -57,9 +72,11 @@ bool BagScanReader::next(LogScan& out) {
     const size_t index = ++impl_->index;
     auto msg = impl_->it->instantiate<sensor_msgs::LaserScan>();
     if (!msg) continue;
-    geometry_msgs::TransformStamped t;
+    geometry_msgs::TransformStamped t, base;
     try {
       t = impl_->tf->lookupTransform(fixed_frame_, msg->header.frame_id, msg->header.stamp);
+      if (!base_frame_.empty())
+        base = impl_->tf->lookupTransform(fixed_frame_, base_frame_, msg->header.stamp);
     } catch (const tf2::TransformException& e) {
       ++skipped_;
       if (!problems_.empty()) problems_ += "\n";
@@ -69,7 +86,7 @@ bool BagScanReader::next(LogScan& out) {
     out.scan = wheelchair_ros::fromLaserScanMsg(*msg);
     if (wheelchair_ros::laserPose2D(t.transform, out.laser_pose))
       wheelchair_core::mirrorScanAngles(out.scan);
-    out.odom_pose = out.laser_pose;
+    out.odom_pose = base_frame_.empty() ? out.laser_pose : wheelchair_ros::toPose2D(base.transform);
     out.line = index;
     ++impl_->it;
     return true;

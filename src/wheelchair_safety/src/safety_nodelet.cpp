@@ -17,12 +17,14 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/Empty.h>
+#include <std_msgs/Float64.h>
 #include <tf2_ros/buffer.h>
 #include <pluginlib/class_list_macros.hpp>
 
@@ -37,6 +39,7 @@ namespace wheelchair_safety {
 /// Every private parameter of the nodelet: the supervisor's limits and its own.
 struct SafetyNodeletConfig {
   SafetyLimits limits;
+  ProtectiveField field;
   wheelchair_core::MapLimits map_limits;  ///< a bigger or broken /map is refused
   /// [Hz] checks per second (and at once on a new goal), each with a permit to the driver: the
   /// command rate (the driver's permit_timeout is 100 ms).
@@ -45,10 +48,11 @@ struct SafetyNodeletConfig {
   std::string base_frame = "base_link";
 
   std::string validate() const {
-    const std::string limits_problem = limits.validate();
+    const std::string limits_problem = limits.validate(), field_problem = field.validate();
     const std::string map_problem = map_limits.validate();
     wheelchair_core::ConfigChecks checks;
     checks.check(limits_problem.empty(), limits_problem)
+        .check(field_problem.empty(), field_problem)
         .check(map_problem.empty(), map_problem)
         .positive("rate", rate)
         .check(!map_frame.empty(), "map_frame must not be empty")
@@ -59,6 +63,7 @@ struct SafetyNodeletConfig {
 
 void readSafetyNodeletConfig(wheelchair_core::ConfigReader& reader, SafetyNodeletConfig& config) {
   readSafetyLimits(reader, config.limits);
+  readProtectiveField(reader, config.field);
   wheelchair_core::readMapLimits(reader, config.map_limits);
   reader.read("rate", config.rate);
   reader.read("map_frame", config.map_frame);
@@ -92,17 +97,19 @@ class SafetyNodelet : public nodelet::Nodelet {
     driver_fault_grace_ = config.limits.driver_fault_grace;
     {
       std::lock_guard<std::mutex> lock(mutex_);  // the channel may call before onInit ends
-      supervisor_ = std::make_unique<SafetySupervisor>(config.limits);
+      supervisor_ = std::make_unique<SafetySupervisor>(config.limits, config.field);
     }
     tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
 
     stop_pub_ = nh.advertise<std_msgs::Bool>("safety/stop", 1, true);
     status_pub_ = nh.advertise<wheelchair_msgs::SafetyStatus>("safety/status", 1, true);
+    speed_limit_pub_ = nh.advertise<std_msgs::Float64>("safety/speed_limit", 1);
     subs_.push_back(nh.subscribe("map", 1, &SafetyNodelet::onMap, this));
     subs_.push_back(nh.subscribe("plan", 1, &SafetyNodelet::onPlan, this));
     subs_.push_back(nh.subscribe("scan", 5, &SafetyNodelet::onScan, this));
     subs_.push_back(nh.subscribe("kld_pose", 5, &SafetyNodelet::onEstimate, this));
     subs_.push_back(nh.subscribe("localization/status", 5, &SafetyNodelet::onLocalization, this));
+    subs_.push_back(nh.subscribe("odom", 5, &SafetyNodelet::onOdometry, this));
     subs_.push_back(nh.subscribe("user_stop", 5, &SafetyNodelet::onUserStop, this));
     subs_.push_back(nh.subscribe("move_base_simple/goal", 5, &SafetyNodelet::onGoal, this));
     ready_ = true;
@@ -162,6 +169,13 @@ class SafetyNodelet : public nodelet::Nodelet {
     const auto returns = wheelchair_core::scanEndpoints(scan, laser_pose);
     std::lock_guard<std::mutex> lock(mutex_);
     supervisor_->onScan(msg->header.stamp.toSec(), returns);
+    supervisor_->onLaserView(scan, laser_pose);
+  }
+
+  /// The forward speed scales the protective field.
+  void onOdometry(const nav_msgs::Odometry::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    supervisor_->onSpeed(msg->header.stamp.toSec(), msg->twist.twist.linear.x);
   }
 
   void onUserStop(const std_msgs::Empty::ConstPtr&) {
@@ -219,6 +233,7 @@ class SafetyNodelet : public nodelet::Nodelet {
                           wheelchair_ros::toPose2D(base_in_map.transform));
     const ros::Time now = ros::Time::now();
     wheelchair_msgs::SafetyStatus status = toSafetyStatus(supervisor_->check(now.toSec()), now);
+    publishSpeedLimit(supervisor_->speedLimit());
     if (status.reason == wheelchair_msgs::SafetyStatus::DRIVER_FAULT && !driver_sentence_.empty())
       status.sentence = driver_sentence_;  // e.g. "another program tried to drive the chair"
     wheelchair_ros::DrivePermit permit;
@@ -247,6 +262,17 @@ class SafetyNodelet : public nodelet::Nodelet {
     channel_->grant(permit);
   }
 
+  /// Every check: the controller drives no faster (+inf: no limit from the field).
+  void publishSpeedLimit(const SpeedLimit& limit) {
+    std_msgs::Float64 msg;
+    msg.data = limit.speed;
+    speed_limit_pub_.publish(msg);
+    if (std::isfinite(limit.speed) && limit.detail != last_limit_detail_)
+      NODELET_INFO_THROTTLE(1.0, "speed limit %.2f m/s: %s", limit.speed, limit.detail.c_str());
+    last_limit_detail_ = std::isfinite(limit.speed) ? limit.detail : "";
+  }
+
+  std::string last_limit_detail_;
   std::mutex mutex_;
   std::unique_ptr<SafetySupervisor> supervisor_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
@@ -257,7 +283,7 @@ class SafetyNodelet : public nodelet::Nodelet {
   double driver_fault_grace_ = 0.0;
   std::string driver_sentence_;  ///< the driver's words for its last fault or latched stop
   Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Identity();
-  ros::Publisher stop_pub_, status_pub_;
+  ros::Publisher stop_pub_, status_pub_, speed_limit_pub_;
   std::vector<ros::Subscriber> subs_;
   ros::Timer timer_;
   std::shared_ptr<wheelchair_ros::DriveChannel> channel_;

@@ -47,7 +47,8 @@ const char* describe(StopReason reason) {
   return "unknown";
 }
 
-SafetySupervisor::SafetySupervisor(SafetyLimits limits) : limits_(limits) {}
+SafetySupervisor::SafetySupervisor(SafetyLimits limits, ProtectiveField field)
+    : limits_(limits), field_(field) {}
 
 void SafetySupervisor::onMap(const wheelchair_core::OccupancyMap& map) { map_ = map; }
 
@@ -74,10 +75,66 @@ void SafetySupervisor::onPose(double stamp, const wheelchair_core::Pose2D& pose)
 void SafetySupervisor::onScan(double stamp, const std::vector<Eigen::Vector2d>& returns_in_map) {
   scan_stamp_ = stamp;
   unexpected_returns_ = 0;
+  nearest_unexpected_ = INFINITY;
+  obstacle_limit_ = SpeedLimit();
   if (path_.empty()) return;
-  for (const auto& point : returns_in_map)
-    if (point.allFinite() && inCorridorAhead(point) && !knownObstacleNear(point))
+  const double stop_extent = stopExtent();
+  const double slow_extent = stop_extent + field_.slowdown_length;
+  const auto ahead = pathAhead(path_, pose_.position(), slow_extent);
+  std::vector<double> slowdown;  // along-path distances of returns in the slow-down zone
+  for (const auto& point : returns_in_map) {
+    if (!point.allFinite()) continue;
+    const double s = distanceAlongCorridor(ahead, point, limits_.corridor_half_width);
+    if (s > slow_extent || knownObstacleNear(point)) continue;
+    if (s <= stop_extent) {
       ++unexpected_returns_;
+      nearest_unexpected_ = std::min(nearest_unexpected_, s);
+    } else {
+      slowdown.push_back(s);
+    }
+  }
+  const size_t needed = static_cast<size_t>(limits_.min_obstacle_returns);
+  if (slowdown.size() >= needed) {
+    // The needed-th nearest: fewer returns than an obstacle takes are noise, as in the stop zone.
+    std::nth_element(slowdown.begin(), slowdown.begin() + (needed - 1), slowdown.end());
+    const double s = slowdown[needed - 1];
+    char text[96];
+    std::snprintf(text, sizeof(text), "something %.2f m ahead of the front",
+                  s - field_.front_offset);
+    obstacle_limit_ = {field_.maxStoppableSpeed(s - field_.front_offset), text};
+  }
+}
+
+void SafetySupervisor::onLaserView(const wheelchair_core::LaserScan2D& scan,
+                                   const wheelchair_core::Pose2D& laser_in_map) {
+  view_limit_ = SpeedLimit();
+  if (path_.empty() || !laser_in_map.isFinite()) return;
+  const double wanted = stopExtent() + field_.slowdown_length;
+  const auto ahead = pathAhead(path_, pose_.position(), wanted);
+  double length = 0.0;
+  for (size_t i = 0; i + 1 < ahead.size(); ++i) length += (ahead[i + 1] - ahead[i]).norm();
+  const char* why = nullptr;
+  const double seen =
+      visibleLength(ahead, scan, laser_in_map, field_.front_offset, field_.view_tolerance, &why);
+  if (seen >= length - 1e-9) return;  // sees all it needs, or the path to its end
+  char text[160];
+  std::snprintf(text, sizeof(text),
+                "the laser sees %.2f m of the path ahead of the front (then %s)",
+                std::max(0.0, seen - field_.front_offset), why ? why : "?");
+  view_limit_ = {field_.maxStoppableSpeed(seen - field_.front_offset), text};
+}
+
+void SafetySupervisor::onSpeed(double, double forward_speed) {
+  if (std::isfinite(forward_speed)) speed_ = std::abs(forward_speed);
+}
+
+double SafetySupervisor::stopExtent() const {
+  return std::max(limits_.stop_distance, field_.front_offset + field_.stopDistance(speed_));
+}
+
+SpeedLimit SafetySupervisor::speedLimit() const {
+  if (latched_.stop) return {0.0, "stopped: " + latched_.detail};
+  return obstacle_limit_.speed <= view_limit_.speed ? obstacle_limit_ : view_limit_;
 }
 
 void SafetySupervisor::onDriverStatus(double stamp, bool fault, const std::string& detail) {
@@ -103,32 +160,6 @@ bool SafetySupervisor::knownObstacleNear(const Eigen::Vector2d& point) const {
       if (map_.inBounds(cx + dx, cy + dy) &&
           map_.at(cx + dx, cy + dy) >= 50)  // occupied in the nav_msgs convention
         return true;
-  return false;
-}
-
-bool SafetySupervisor::inCorridorAhead(const Eigen::Vector2d& point) const {
-  // Start from the path vertex nearest to the chair, then walk stop_distance forward.
-  const Eigen::Vector2d here = pose_.position();
-  size_t start = 0;
-  double best = INFINITY;
-  for (size_t i = 0; i < path_.size(); ++i) {
-    const double d = (path_[i] - here).squaredNorm();
-    if (d < best) best = d, start = i;
-  }
-  std::vector<Eigen::Vector2d> ahead{here};
-  double travelled = 0.0;
-  for (size_t i = start; i < path_.size() && travelled < limits_.stop_distance; ++i) {
-    travelled += (path_[i] - ahead.back()).norm();
-    ahead.push_back(path_[i]);
-  }
-  double walked = 0.0;
-  for (size_t i = 0; i + 1 < ahead.size(); ++i) {
-    double along = 0.0;
-    const double dist =
-        wheelchair_core::pointSegmentDistance(point, ahead[i], ahead[i + 1], &along);
-    if (dist <= limits_.corridor_half_width && walked + along <= limits_.stop_distance) return true;
-    walked += (ahead[i + 1] - ahead[i]).norm();
-  }
   return false;
 }
 
@@ -165,10 +196,15 @@ SafetyVerdict SafetySupervisor::evaluate(double now) const {
     return stopFor(StopReason::kCovarianceTooLarge, text, position ? xy_std : heading_std,
                    position ? limits_.max_position_std : limits_.max_heading_std);
   }
-  if (unexpected_returns_ >= limits_.min_obstacle_returns)
-    return stopFor(StopReason::kUnexpectedObstacle,
-                   std::to_string(unexpected_returns_) + " laser returns on the path ahead",
-                   unexpected_returns_, limits_.min_obstacle_returns);
+  if (unexpected_returns_ >= limits_.min_obstacle_returns) {
+    char text[160];
+    std::snprintf(text, sizeof(text),
+                  "%d laser returns on the path ahead, nearest %.2f m from the axle, inside the "
+                  "stop zone of %.2f m at %.2f m/s",
+                  unexpected_returns_, nearest_unexpected_, stopExtent(), speed_);
+    return stopFor(StopReason::kUnexpectedObstacle, text, unexpected_returns_,
+                   limits_.min_obstacle_returns);
+  }
   return {};
 }
 

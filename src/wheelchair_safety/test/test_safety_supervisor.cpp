@@ -1,37 +1,18 @@
 // Each stop condition of the supervisor, its latch, and what must not stop the chair.
 #include <wheelchair_safety/safety_supervisor.h>
 
+#include "safety_fixtures.h"
+
 #include <gtest/gtest.h>
 
 using namespace wheelchair_safety;
 using wheelchair_core::OccupancyMap;
 using wheelchair_core::Pose2D;
+using wheelchair_safety_test::corridorMap;
+using wheelchair_safety_test::personAt;
+using wheelchair_safety_test::straightPath;
 
 namespace {
-
-/// A 10 m x 4 m free corridor (5 cm cells) whose wall at x = 9 m is in the map.
-OccupancyMap corridorMap() {
-  OccupancyMap map;
-  map.width = 200;
-  map.height = 80;
-  map.data.assign(map.width * map.height, wheelchair_core::kFree);
-  for (int y = 0; y < map.height; ++y) map.at(180, y) = wheelchair_core::kOccupied;
-  return map;
-}
-
-std::vector<Pose2D> straightPath() {
-  std::vector<Pose2D> path;
-  for (double x = 1.0; x <= 8.5; x += 0.05) path.push_back({x, 2.0, 0.0});
-  return path;
-}
-
-/// A person: a small arc of returns centred at (x, y).
-std::vector<Eigen::Vector2d> personAt(double x, double y) {
-  std::vector<Eigen::Vector2d> returns;
-  for (double a = -1.0; a <= 1.0; a += 0.2)
-    returns.emplace_back(x - 0.15 * std::cos(a), y + 0.15 * std::sin(a));
-  return returns;
-}
 
 /// A supervisor fed healthy data at time t, chair at (2, 2) heading +x on the path.
 SafetySupervisor healthy(double t = 10.0) {

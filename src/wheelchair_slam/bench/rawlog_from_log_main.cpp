@@ -7,7 +7,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
-#include <wheelchair_slam/odometry_log.h>
+#include <wheelchair_logs/carmen_log.h>
 
 #include <cmath>
 #include <iostream>
@@ -29,19 +29,20 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    wheelchair_slam::OdometryLogReader reader(log,
-                                              wheelchair_slam::odometrySourceFromName(odometry));
+    wheelchair_logs::CarmenOptions options;
+    options.odometry = wheelchair_logs::odometrySourceFromName(odometry);
+    wheelchair_logs::CarmenLogReader reader(log, options);
     mrpt::io::CFileGZOutputStream file(out);
     auto archive = mrpt::serialization::archiveFrom(file);
     size_t scans = 0;
-    for (wheelchair_slam::OdometryScan s; reader.next(s);) {
+    for (wheelchair_logs::LogScan s; reader.next(s);) {
       // Relative log times start near 0: put them after 2001 (MRPT clocks count from 1601).
       const double stamp = s.scan.stamp < 1e8 ? 1e9 + s.scan.stamp : s.scan.stamp;
       const auto t = mrpt::Clock::fromDouble(stamp);
       mrpt::obs::CObservationOdometry odo;
       odo.timestamp = t;
       odo.sensorLabel = "ODOMETRY";
-      odo.odometry = mrpt::poses::CPose2D(s.odometry.x, s.odometry.y, s.odometry.yaw);
+      odo.odometry = mrpt::poses::CPose2D(s.odom_pose.x, s.odom_pose.y, s.odom_pose.yaw);
       archive << odo;
       mrpt::obs::CObservation2DRangeScan obs;
       obs.timestamp = t;

@@ -16,13 +16,9 @@ BagOdometryReader::BagOdometryReader(const std::string& path, const std::string&
 
 BagOdometryReader::~BagOdometryReader() = default;
 
-bool BagOdometryReader::next(OdometryScan& out) {
-  wheelchair_logs::LogScan s;
-  if (!impl_->reader.next(s)) return false;
-  out.scan = std::move(s.scan);
-  out.odometry = s.laser_pose;
-  out.logged_pose = s.laser_pose;
-  out.line = s.line;
+bool BagOdometryReader::next(wheelchair_logs::LogScan& out) {
+  if (!impl_->reader.next(out)) return false;
+  out.odom_pose = out.laser_pose;
   return true;
 }
 

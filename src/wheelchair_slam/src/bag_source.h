@@ -3,7 +3,7 @@
 // BagScanReader, which needs ROS's tf2 and rosbag).
 #pragma once
 
-#include <wheelchair_slam/odometry_log.h>
+#include <wheelchair_logs/log_scan.h>
 
 #include <memory>
 #include <string>
@@ -16,7 +16,7 @@ class BagOdometryReader {
                     const std::string& odom_frame);
   ~BagOdometryReader();
   /// Next scan with its laser pose in odom_frame as the odometry.
-  bool next(OdometryScan& out);
+  bool next(wheelchair_logs::LogScan& out);
   const std::string& problemsOfLastCall() const;
   size_t corruptLines() const;
   double progress() const;

@@ -3,7 +3,8 @@
 // The Kuemmerle relation error of a trajectory (CSV stamp,x,y,yaw) as one JSON object: against a
 // .relations file (relation time = trajectory time + offset), or against consecutive poses (or
 // every pair of poses) of a reference trajectory.
-#include <wheelchair_slam/relations.h>
+#include <wheelchair_logs/relations.h>
+#include <wheelchair_slam/trajectory_io.h>
 
 #include <cmath>
 #include <cstdio>
@@ -18,7 +19,7 @@ const char* kUsage =
     "[--all-pairs])\n"
     "                      [--offset S] [--tolerance S]\n";
 
-void printSummary(const char* name, const wheelchair_slam::ErrorSummary& s, double scale) {
+void printSummary(const char* name, const wheelchair_logs::ErrorSummary& s, double scale) {
   std::printf("\"%s\": {\"mean\": %.6f, \"std\": %.6f, \"max\": %.6f}", name, s.mean * scale,
               s.std * scale, s.max * scale);
 }
@@ -62,15 +63,15 @@ int main(int argc, char** argv) {
   try {
     const auto poses = wheelchair_slam::readTrajectoryCsv(trajectory);
     const auto rel = relations.empty()
-                         ? wheelchair_slam::referenceRelations(
+                         ? wheelchair_logs::referenceRelations(
                                wheelchair_slam::readTrajectoryCsv(reference), all_pairs)
-                         : wheelchair_slam::readRelations(relations);
-    const auto errors = wheelchair_slam::relationErrors(rel, poses, offset, tolerance);
+                         : wheelchair_logs::readRelations(relations);
+    const auto errors = wheelchair_logs::relationErrors(rel, poses, offset, tolerance);
     std::printf("{\"relations\": %zu, \"matched\": %zu, ", errors.relations,
                 errors.translational.size());
-    printSummary("translational_m", wheelchair_slam::summarize(errors.translational), 1.0);
+    printSummary("translational_m", wheelchair_logs::summarize(errors.translational), 1.0);
     std::printf(", ");
-    printSummary("rotational_deg", wheelchair_slam::summarize(errors.rotational), 180.0 / M_PI);
+    printSummary("rotational_deg", wheelchair_logs::summarize(errors.rotational), 180.0 / M_PI);
     std::printf("}\n");
   } catch (const std::exception& e) {
     std::cerr << "relation_error: " << e.what() << "\n";

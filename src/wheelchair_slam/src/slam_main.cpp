@@ -6,10 +6,10 @@
 #include <sys/resource.h>
 #include <wheelchair_core/map_io.h>
 
+#include <wheelchair_logs/carmen_log.h>
 #include <wheelchair_logs/progress_bar.h>
 #include <wheelchair_mapping/map_consistency.h>
 #include <wheelchair_slam/graph_slam.h>
-#include <wheelchair_slam/odometry_log.h>
 #include <wheelchair_slam/slam_map.h>
 #include <wheelchair_slam/slam_session.h>
 #include <wheelchair_slam/trajectory_io.h>
@@ -225,7 +225,7 @@ int runWith(Reader& reader, const Args& a, const SlamConfig& config,
   wheelchair_logs::ProgressBar bar(stderr, "slam", !a.quiet);
   size_t log_index = 0, not_located = 0;
   double last_read = -std::numeric_limits<double>::infinity();
-  for (OdometryScan s; reader.next(s);) {
+  for (wheelchair_logs::LogScan s; reader.next(s);) {
     if (!reader.problemsOfLastCall().empty()) {
       bar.breakLine();
       std::cerr << reader.problemsOfLastCall() << " (skipped)\n";
@@ -244,7 +244,7 @@ int runWith(Reader& reader, const Args& a, const SlamConfig& config,
       std::cerr << a.log << ":" << s.line << ": scan skipped: older than the saved map's last\n";
       continue;
     }
-    if (!a.odometry_only && !slam.addScan(s.scan, s.odometry)) {
+    if (!a.odometry_only && !slam.addScan(s.scan, s.odom_pose)) {
       ++not_located;  // a new drive not (yet) found in the saved map: the scan is left out
       continue;
     }
@@ -254,8 +254,8 @@ int runWith(Reader& reader, const Args& a, const SlamConfig& config,
                 << " scans\n";
       not_located = 0;
     }
-    odometry.push_back(s.odometry);
-    logged.push_back(s.logged_pose);
+    odometry.push_back(s.odom_pose);
+    logged.push_back(s.laser_pose);
     stamps.push_back(s.scan.stamp);
     scans.push_back(std::move(s.scan));
     bar.update(reader.progress(), std::to_string(scans.size()) + " scans, " +
@@ -372,7 +372,9 @@ int run(const Args& a) {
     BagOdometryReader reader(a.log, a.scan_topic, a.odom_frame);
     return runWith(reader, a, config, start);
   }
-  OdometryLogReader reader(a.log, odometrySourceFromName(a.odometry));
+  wheelchair_logs::CarmenOptions options;
+  options.odometry = wheelchair_logs::odometrySourceFromName(a.odometry);
+  wheelchair_logs::CarmenLogReader reader(a.log, options);
   return runWith(reader, a, config, start);
 }
 

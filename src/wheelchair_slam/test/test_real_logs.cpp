@@ -2,9 +2,9 @@
 // repository; the test skips without it): wheelchair_slam on the raw odometry of
 // derived_intel_gt_rawodom.clf, judged by Kuemmerle et al.'s intel.relations.
 #include <gtest/gtest.h>
+#include <wheelchair_logs/carmen_log.h>
+#include <wheelchair_logs/relations.h>
 #include <wheelchair_slam/graph_slam.h>
-#include <wheelchair_slam/odometry_log.h>
-#include <wheelchair_slam/relations.h>
 #include <wheelchair_slam/slam_session.h>
 
 #include <cmath>
@@ -15,6 +15,12 @@ namespace wheelchair_slam {
 namespace {
 
 const std::string kData = WHEELCHAIR_SHARED_DATA_DIR;
+using wheelchair_logs::ErrorSummary;
+using wheelchair_logs::readRelations;
+using wheelchair_logs::RelationErrors;
+using wheelchair_logs::relationErrors;
+using wheelchair_logs::summarize;
+using wheelchair_logs::TimedPose;
 
 const std::string kIntelLog = kData + "/intel/derived_intel_gt_rawodom.clf";
 const std::string kIntelRelations = kData + "/intel/intel.relations";
@@ -24,10 +30,10 @@ bool haveIntel() {
 }
 
 /// The log's scans with their raw odometry, those whose stamps go backwards left out.
-std::vector<OdometryScan> intelScans() {
-  OdometryLogReader reader(kIntelLog, OdometrySource::kFields);
-  std::vector<OdometryScan> out;
-  for (OdometryScan s; reader.next(s);) {
+std::vector<wheelchair_logs::LogScan> intelScans() {
+  wheelchair_logs::CarmenLogReader reader(kIntelLog);
+  std::vector<wheelchair_logs::LogScan> out;
+  for (wheelchair_logs::LogScan s; reader.next(s);) {
     if (!out.empty() && s.scan.stamp < out.back().scan.stamp) continue;
     out.push_back(s);
   }
@@ -46,7 +52,7 @@ ErrorSummary intelError(const GraphSlam& slam) {
 const ErrorSummary& onePass() {
   static const ErrorSummary summary = [] {
     GraphSlam slam{SlamConfig()};
-    for (const OdometryScan& s : intelScans()) slam.addScan(s.scan, s.odometry);
+    for (const wheelchair_logs::LogScan& s : intelScans()) slam.addScan(s.scan, s.odom_pose);
     slam.finish();
     return intelError(slam);
   }();
@@ -73,14 +79,14 @@ TEST(RealLogs, IntelSecondHalfContinuedFromTheSavedFirstHalfIsAsGoodAsOnePass) {
   if (!haveIntel()) {
     GTEST_SKIP() << "no real logs at " << kData << " (../shared/data beside the repository)";
   }
-  const std::vector<OdometryScan> scans = intelScans();
+  const std::vector<wheelchair_logs::LogScan> scans = intelScans();
   const size_t half = scans.size() / 2;
   const ErrorSummary& whole = onePass();
 
   GraphSlam first{SlamConfig()};
   std::vector<wheelchair_core::LaserScan2D> first_scans;
   for (size_t i = 0; i < half; ++i) {
-    first.addScan(scans[i].scan, scans[i].odometry);
+    first.addScan(scans[i].scan, scans[i].odom_pose);
     first_scans.push_back(scans[i].scan);
   }
   first.finish();
@@ -90,7 +96,7 @@ TEST(RealLogs, IntelSecondHalfContinuedFromTheSavedFirstHalfIsAsGoodAsOnePass) {
   SavedSlam saved = loadSlam(dir, SlamConfig());
   GraphSlam continued{SlamConfig(), std::move(saved.graph), saved.records};
   for (size_t i = half; i < scans.size(); ++i) {
-    ASSERT_TRUE(continued.addScan(scans[i].scan, scans[i].odometry))
+    ASSERT_TRUE(continued.addScan(scans[i].scan, scans[i].odom_pose))
         << "scan " << i << " of the second half not located in the first half's map";
   }
   continued.finish();

@@ -25,6 +25,7 @@
 #include <actionlib_msgs/GoalStatus.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/Empty.h>
+#include <std_msgs/Float64.h>
 #include <std_msgs/String.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/drive_channel.h>
@@ -63,6 +64,7 @@ class ControllerNodelet : public nodelet::Nodelet {
   void onHold(const wheelchair_ros::SafetyHold& hold);
   /// The driver's state (drive channel): a latched stop ends the drive.
   void onDriverReport(const wheelchair_ros::DriverReport& report);
+  void onSpeedLimit(const std_msgs::Float64::ConstPtr& msg);
   void onUserStop(const std_msgs::Empty::ConstPtr& msg);
   void onLocalizationStatus(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg);
   void buildReferences();  ///< worker thread
@@ -82,6 +84,7 @@ class ControllerNodelet : public nodelet::Nodelet {
   WheelSpeedMeasurement wheels_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   ros::Subscriber path_sub_, odom_sub_, user_stop_sub_, localization_sub_;
+  ros::Subscriber speed_limit_sub_;
   ros::Publisher torque_pub_, reference_pub_, error_pub_, status_pub_, path_status_pub_;
   ros::Timer timer_;
   std::string last_status_, last_path_status_;

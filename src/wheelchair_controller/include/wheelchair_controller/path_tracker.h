@@ -11,6 +11,7 @@
 #include <wheelchair_controller/tracker_config.h>
 #include <wheelchair_core/pose2d.h>
 
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -83,6 +84,9 @@ class PathTracker {
   /// (controlled) and refuses paths until every hold is released; then a new path resumes.
   void hold(const std::string& source, const std::string& reason);
   void release(const std::string& source);
+  /// The safety supervisor's protective field: drive no faster than `speed` [m/s] (+inf: no
+  /// limit). The governor slows the reference's time rate to it (within governor_rate).
+  void setSpeedLimit(double speed) { speed_limit_ = std::isnan(speed) ? 0.0 : speed; }
   /// Reason of the first active hold (empty: none).
   std::string holdReason() const;
   /// While a hold is active a new path is refused where the rider sees it: the status says
@@ -138,6 +142,7 @@ class PathTracker {
   double phase_time_ = 0.0, rate_ = 1.0, rate_dot_ = 0.0, overtime_ = 0.0;
   int goal_rotation_corrections_ = 0;
   bool rate_initialized_ = false;
+  double speed_limit_ = INFINITY;  ///< [m/s] from the supervisor's field
   double last_saturation_ = 1.0;
   Eigen::Vector2d last_body_accel_ = Eigen::Vector2d::Zero();  ///< (a, w_dot) commanded
 

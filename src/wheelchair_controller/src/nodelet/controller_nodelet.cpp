@@ -91,6 +91,7 @@ void ControllerNodelet::onInit() {
   path_status_pub_ = pnh.advertise<actionlib_msgs::GoalStatus>("path_status", 10, true);
   worker_ = std::thread(&ControllerNodelet::buildReferences, this);
   path_sub_ = nh.subscribe("plan", 1, &ControllerNodelet::onPath, this);
+  speed_limit_sub_ = nh.subscribe("safety/speed_limit", 1, &ControllerNodelet::onSpeedLimit, this);
   user_stop_sub_ = nh.subscribe("user_stop", 5, &ControllerNodelet::onUserStop, this);
   localization_sub_ =
       nh.subscribe("localization/status", 5, &ControllerNodelet::onLocalizationStatus, this);
@@ -163,6 +164,11 @@ void ControllerNodelet::onDriverReport(const wheelchair_ros::DriverReport& repor
   std::lock_guard<std::mutex> lock(mutex_);
   if (!tracker_) return;  // nothing to end yet
   tracker_->abort("the motors stopped: " + report.sentence);
+}
+
+void ControllerNodelet::onSpeedLimit(const std_msgs::Float64::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  tracker_->setSpeedLimit(msg->data);
 }
 
 void ControllerNodelet::onUserStop(const std_msgs::Empty::ConstPtr&) {

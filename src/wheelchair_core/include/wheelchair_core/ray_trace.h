@@ -1,4 +1,5 @@
-// The grid cells a straight segment crosses (Amanatides & Woo voxel traversal).
+// The grid cells along a straight segment: every cell it crosses (Amanatides & Woo voxel
+// traversal), or one cell per step of the digital line between two cells (Bresenham).
 #pragma once
 
 #include <cmath>
@@ -36,6 +37,32 @@ void traceCells(double gx0, double gy0, double gx1, double gy1, Visit&& visit) {
     }
   }
   visit(ix, iy, true);
+}
+
+/// Calls visit(ix, iy, is_last) for the cells of the 8-connected digital line (Bresenham) from
+/// cell (ix0, iy0) to cell (ix1, iy1): one cell per step along the major axis,
+/// max(|dx|, |dy|) + 1 cells, the last call the end cell. Unlike traceCells it skips the cells
+/// the segment only clips at a corner (a laser beam marks one cell per cell of travel, as in
+/// MRPT's and gmapping's grids).
+template <typename Visit>
+void traceLineCells(int ix0, int iy0, int ix1, int iy1, Visit&& visit) {
+  const int dx = std::abs(ix1 - ix0), dy = -std::abs(iy1 - iy0);
+  const int sx = ix0 < ix1 ? 1 : -1, sy = iy0 < iy1 ? 1 : -1;
+  int err = dx + dy;
+  for (int x = ix0, y = iy0;;) {
+    const bool last = x == ix1 && y == iy1;
+    visit(x, y, last);
+    if (last) return;
+    const int e2 = 2 * err;
+    if (e2 >= dy) {
+      err += dy;
+      x += sx;
+    }
+    if (e2 <= dx) {
+      err += dx;
+      y += sy;
+    }
+  }
 }
 
 }  // namespace wheelchair_core

@@ -27,6 +27,10 @@ struct ScanView {
   bool scanning() const {
     return state == State::kRooms || state == State::kPlaces || state == State::kConfirming;
   }
+  /// The rider pressed the switch on a room (its places are scanned) or a place (to confirm):
+  /// the switch's choice leads and the pointer's targets on the map wait. While the HMI only
+  /// offers rooms, the pointer chooses freely (a pointer rider's HMI scans all the time).
+  bool switchEngaged() const { return state == State::kPlaces || state == State::kConfirming; }
 };
 
 /// wheelchair_msgs/LocalizationStatus: only whether the chair can be driven on, and the

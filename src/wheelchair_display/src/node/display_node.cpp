@@ -178,8 +178,8 @@ void DisplayNode::onHmiState(const wheelchair_msgs::HmiState::ConstPtr& msg) {
   scan_.time_left = msg->time_left;
   scan_.step_time = msg->step_time;
   scan_received_ = ros::Time::now().toSec();
-  // The HMI's scanning leads: a room the pointer had opened gives way.
-  if (scan_.scanning()) pointer_room_.clear();
+  // The switch's choice leads: a room the pointer had opened gives way to the one pressed.
+  if (scan_.switchEngaged()) pointer_room_.clear();
 }
 
 void DisplayNode::onLocalization(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg) {

@@ -118,7 +118,7 @@ int DisplayWindow::targetAt(const QPointF& p, bool for_dwell) const {
     const int room = roomAt(node_.rooms(), world);
     return room >= 0 ? static_cast<int>(TargetKind::kRoom) * kIdScale + room : kNoTarget;
   }
-  if (mode == ViewMode::kRoom && !node_.scan().scanning() && !for_dwell)
+  if (mode == ViewMode::kRoom && !switchLeads() && !for_dwell)
     return static_cast<int>(TargetKind::kSpot) * kIdScale;
   return kNoTarget;
 }
@@ -214,6 +214,8 @@ void DisplayWindow::mouseReleaseEvent(QMouseEvent* event) {
 
 DisplayWindow::ViewMode DisplayWindow::viewMode() const {
   using Phase = DriveView::Phase;
+  // The carer puts the chair where it is: the whole map, whatever room the switch opened.
+  if (carer_ == CarerMode::kSetPose) return ViewMode::kOverview;
   const Phase phase = node_.drive().view().phase;
   if ((phase == Phase::kChecking || phase == Phase::kReachable || phase == Phase::kDriving) &&
       node_.drive().goalPose())
@@ -224,10 +226,14 @@ DisplayWindow::ViewMode DisplayWindow::viewMode() const {
 const RoomArea* DisplayWindow::shownRoom() const {
   const ScanView scan = node_.scan();
   std::string room = node_.pointerRoom();
-  if (scan.state == ScanView::State::kPlaces || scan.state == ScanView::State::kConfirming)
-    room = scan.room;
+  if (switchLeads()) room = scan.room;
   const int index = roomNamed(node_.rooms(), room);
   return index >= 0 ? &node_.rooms()[index] : nullptr;
+}
+
+bool DisplayWindow::switchLeads() const {
+  // The carer's tools, once open, lead the map (a place to delete, the chair's position).
+  return carer_ == CarerMode::kClosed && node_.scan().switchEngaged();
 }
 
 bool DisplayWindow::flashOn(double now) const {
@@ -365,7 +371,7 @@ void DisplayWindow::paintMap(QPainter& painter, double now) {
       const QRectF rect(r.x, r.y, r.w, r.h);
       drawLabelIn(painter, theme, qs(riderName(places[shown[k]].name)), rect, layout_.label_font_px,
                   levels[k], flash);
-      if (mode == ViewMode::kRoom && !scan.scanning()) {
+      if (mode == ViewMode::kRoom && !switchLeads()) {
         const int id = static_cast<int>(TargetKind::kPlace) * kIdScale + static_cast<int>(shown[k]);
         rect_targets_.emplace_back(rect, id);
         // A place's dot wins over a neighbour's name plate lying across it.
@@ -402,7 +408,7 @@ void DisplayWindow::paintMap(QPainter& painter, double now) {
     painter.restore();
   }
   // Back to every room (or away from a choice not yet confirmed).
-  const bool can_go_back = !scan.scanning() && phase != DriveView::Phase::kDriving &&
+  const bool can_go_back = !switchLeads() && phase != DriveView::Phase::kDriving &&
                            (mode == ViewMode::kRoom || mode == ViewMode::kDrive);
   if (can_go_back) {
     const QString text = "\u25C0 All rooms";

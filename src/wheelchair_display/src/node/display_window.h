@@ -58,6 +58,9 @@ class DisplayWindow : public QWidget {
   void paintList(QPainter& painter);
   void paintPrompt(QPainter& painter, const Message& message);
   void paintStop(QPainter& painter);
+  /// The rider's switch choice (a room's places scanned, a place to confirm) leads the map and
+  /// the pointer's map targets wait; not while the carer's tools are open.
+  bool switchLeads() const;
   bool flashOn(double now) const;
 
   void buildCarerPanel();

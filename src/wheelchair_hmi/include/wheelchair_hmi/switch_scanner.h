@@ -57,6 +57,12 @@ class SwitchScanner {
   const std::vector<Place>& places() const { return places_; }
   const std::vector<std::string>& groups() const { return group_names_; }
   const std::vector<std::vector<size_t>>& groupMembers() const { return group_members_; }
+  // Where the scan stands (scan_state.h reads them): the highlighted room, the highlighted
+  // place's index among the room's members, the time of the last step or press.
+  size_t group() const { return group_; }
+  size_t item() const { return item_; }
+  double lastStep() const { return last_step_; }
+  const ScannerOptions& options() const { return options_; }
 
  private:
   ScanOutput highlight();

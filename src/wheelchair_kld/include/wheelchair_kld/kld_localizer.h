@@ -30,8 +30,9 @@ class KldLocalizer {
   /// `seed` drives every random draw: equal seeds and inputs give equal results.
   KldLocalizer(std::shared_ptr<const LocalizationMap> map, const KldParams& params, uint64_t seed);
 
-  /// Global localization: max_particles poses uniform over the known-free space.
-  void initGlobal();
+  /// Global localization: `particles` (0: global_particles) poses uniform over the known-free
+  /// space.
+  void initGlobal(int particles = 0);
   /// Particles drawn from N(mean, cov) (x, y, yaw of base_link in the map frame).
   void initGaussian(const wheelchair_core::Pose2D& mean, const Eigen::Matrix3d& cov);
   bool initialized() const { return !particles_.empty(); }
@@ -57,6 +58,8 @@ class KldLocalizer {
   double wFast() const { return w_fast_; }
   /// Share of the last scan's echoes that fit the map at the estimate.
   double inlierFraction() const { return inliers_; }
+  /// Where the last scan's echoes fell at the estimate (inliers, contradictions, unknown).
+  const MeasurementModel::FitCounts& lastFit() const { return fit_; }
   /// Mean inlier share over the last fit_window updates (1 before the first update).
   double meanFit() const;
   /// Global re-localizations triggered by a persistent misfit so far.
@@ -86,6 +89,7 @@ class KldLocalizer {
   KldParams params_;
   mrpt::random::CRandomGenerator rng_;
   MeasurementModel measurement_;
+  MeasurementModel fit_model_;  ///< every fit_beam_step-th beam: the inlier share at the estimate
   std::vector<Particle> particles_;
   PoseEstimate estimate_;
   std::optional<mrpt::math::TPose2D> last_odom_;
@@ -97,6 +101,10 @@ class KldLocalizer {
   std::string last_rejection_;
   std::deque<double> fit_window_;  ///< inlier shares of the last fit_window updates
   int relocalizations_ = 0;
+  MeasurementModel::FitCounts fit_;
+  int poor_fits_ = 0;
+  bool recovering_ = false;  ///< since a re-localization, until localized again  ///< consecutive
+                             ///< updates below relocalize_max_inliers
 };
 
 }  // namespace wheelchair_kld

@@ -30,6 +30,19 @@ class MeasurementModel {
   /// (how well the scan fits the map there).
   double inlierFraction(const mrpt::math::TPose2D& pose, double tolerance) const;
 
+  /// Where the echoes' endpoints fall for this pose: within `tolerance` of an obstacle (inliers),
+  /// in known-free space farther than that (contradictions: the map says nothing is there), or
+  /// in unknown space / off the map (no evidence either way).
+  struct FitCounts {
+    int echoes = 0, inliers = 0, contradictions = 0;
+    /// inliers / (inliers + contradictions): how well the scan fits where the map knows (1
+    /// without such echoes).
+    double knownFit() const {
+      return inliers + contradictions > 0 ? double(inliers) / (inliers + contradictions) : 1.0;
+    }
+  };
+  FitCounts fitCounts(const mrpt::math::TPose2D& pose, double tolerance) const;
+
  private:
   struct Beam {
     double end_x, end_y;  ///< endpoint in base_link (likelihood field)

@@ -4,8 +4,10 @@
 // from the rider. ROS-free; time is injected (seconds, any epoch).
 #pragma once
 
+#include <wheelchair_core/laser_scan.h>
 #include <wheelchair_core/occupancy_map.h>
 #include <wheelchair_core/pose2d.h>
+#include <wheelchair_safety/protective_field.h>
 #include <wheelchair_safety/safety_limits.h>
 
 #include <Eigen/Core>
@@ -39,9 +41,16 @@ struct SafetyVerdict {
   double limit = NAN;  ///< the limit it broke
 };
 
+/// The speed the chair may drive at now so that it can always stop within what it sees.
+struct SpeedLimit {
+  double speed = INFINITY;  ///< [m/s]; +inf: no limit from the field
+  std::string detail;       ///< for the log, e.g. "laser sees 1.40 m of the path"
+};
+
 class SafetySupervisor {
  public:
-  explicit SafetySupervisor(SafetyLimits limits = SafetyLimits());
+  explicit SafetySupervisor(SafetyLimits limits = SafetyLimits(),
+                            ProtectiveField field = ProtectiveField());
 
   void onMap(const wheelchair_core::OccupancyMap& map);
   /// The path being driven, in the map frame (empty: nothing ahead to watch).
@@ -51,8 +60,18 @@ class SafetySupervisor {
                       const std::string& why_not);
   /// The chair's pose (tf map -> base_link) and when it was valid.
   void onPose(double stamp, const wheelchair_core::Pose2D& pose);
-  /// A laser scan's returns, already in the map frame; non-finite points are ignored.
+  /// A laser scan's returns, already in the map frame; non-finite points are ignored. A return
+  /// not in the map, in the corridor along the path, stops the chair within the stop zone
+  /// (stop_distance from the axle, or longer at speed: protective_field.h) and limits the speed
+  /// within the slow-down zone beyond it.
   void onScan(double stamp, const std::vector<Eigen::Vector2d>& returns_in_map);
+  /// The same scan as the laser measured it and the laser's pose in the map frame: how much of
+  /// the path ahead it sees (range, field of view, occlusion) limits the speed.
+  void onLaserView(const wheelchair_core::LaserScan2D& scan,
+                   const wheelchair_core::Pose2D& laser_in_map);
+  /// The chair's forward speed [m/s] (odometry); it scales the protective field. Non-finite
+  /// values are ignored.
+  void onSpeed(double stamp, double forward_speed);
   /// The base driver's status at `stamp`; a fault counts once it has lasted driver_fault_grace.
   void onDriverStatus(double stamp, bool fault, const std::string& detail);
   void onUserStop(double stamp);
@@ -65,14 +84,20 @@ class SafetySupervisor {
   SafetyVerdict check(double now);
 
   const SafetyVerdict& latched() const { return latched_; }
+  /// The speed limit from the field (slow-down zone, view); 0 while a stop holds.
+  SpeedLimit speedLimit() const;
+  /// The stop zone's extent along the path from the axle centre [m] at the last speed.
+  double stopExtent() const;
 
  private:
   SafetyVerdict evaluate(double now) const;
   bool knownObstacleNear(const Eigen::Vector2d& point) const;
-  /// Distance from `point` to the path ahead of the chair, within stop_distance of travel.
-  bool inCorridorAhead(const Eigen::Vector2d& point) const;
 
   SafetyLimits limits_;
+  ProtectiveField field_;
+  double speed_ = 0.0;
+  SpeedLimit obstacle_limit_, view_limit_;
+  double nearest_unexpected_ = INFINITY;  ///< along the path from the axle [m]
   wheelchair_core::OccupancyMap map_;
   std::vector<Eigen::Vector2d> path_;
   double scan_stamp_ = -1.0, pose_stamp_ = -1.0, localization_stamp_ = -1.0;

@@ -5,16 +5,14 @@
 
 #include <wheelchair_core/laser_scan.h>
 #include <wheelchair_core/pose2d.h>
+#include <wheelchair_logs/timed_pose.h>
 
 #include <string>
 #include <vector>
 
 namespace wheelchair_slam {
 
-struct TimedPose {
-  double stamp = 0.0;
-  wheelchair_core::Pose2D pose;
-};
+using wheelchair_logs::TimedPose;
 
 /// Throws std::runtime_error naming the file if it cannot be written.
 void writeTrajectoryCsv(const std::string& path, const std::vector<TimedPose>& poses);

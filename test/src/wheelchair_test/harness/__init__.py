@@ -20,7 +20,8 @@ from . import stack
 
 def __getattr__(name):
     # The rider imports rospy and the messages: only when asked for.
-    if name in ("Rider", "RiderError", "Mark", "describe_stop", "yaw_of", "angle_diff"):
+    if name in ("Rider", "RiderError", "Mark", "describe_stop", "yaw_of", "angle_diff",
+                "point_ahead"):
         from . import rider
 
         return getattr(rider, name)

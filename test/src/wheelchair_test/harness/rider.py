@@ -44,6 +44,21 @@ def describe_stop(status):
     return f"{status.sentence} ({status.detail})" if status.detail else status.sentence
 
 
+def point_ahead(plan, x, y, distance):
+    """The point `distance` [m] along the plan (nav_msgs/Path) from its vertex nearest to (x, y),
+    or None if the plan is shorter."""
+    points = [(p.pose.position.x, p.pose.position.y) for p in plan.poses]
+    i = min(range(len(points)), key=lambda k: math.hypot(points[k][0] - x, points[k][1] - y))
+    walked = 0.0
+    for a, b in zip(points[i:], points[i + 1:]):
+        step = math.hypot(b[0] - a[0], b[1] - a[1])
+        if walked + step >= distance:
+            f = (distance - walked) / step
+            return a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])
+        walked += step
+    return None
+
+
 class Mark(NamedTuple):
     """A `since` for the questions of Rider (Rider.mark()): the simulated time and how long
     each log was. A log is cut at that position, not at that time: the test's clock moves in
@@ -242,6 +257,27 @@ class Rider:
         from wheelchair_sim.srv import AddObstacle
 
         return rospy.ServiceProxy("/sim/add_obstacle", AddObstacle)(x, y, radius, appear_time)
+
+    def stops_for_person(self, test, person, radius, front_offset=0.30, rest_wall_timeout=60.0):
+        """A person (a disc of `radius` at `person` = (x, y)) appears now; fails `test` unless
+        the supervisor stops the chair for it (OBSTACLE, "in the way") and it comes to rest
+        without touching them (the simulator's contact check). Returns (mark, stop, gap): the
+        Mark of the appearance, the SafetyStatus, the gap [m] left between the chair's front
+        (`front_offset` ahead of the axle, chair.yaml's footprint) and the person."""
+        t_person = self.mark()
+        test.assertTrue(self.add_obstacle(person[0], person[1], radius, 0.0).success)
+        test.assertTrue(self.wait(lambda: self.first_stop(t_person), 30.0),
+                        "no safety stop: " + self.describe(t_person))
+        _, stop = self.first_stop(t_person)
+        test.assertEqual(stop.reason, SafetyStatus.OBSTACLE, describe_stop(stop))
+        test.assertIn("in the way", stop.sentence)
+        test.assertTrue(self.wait(self.at_rest, rest_wall_timeout),
+                        "still moving: " + self.describe(t_person))
+        self.sim_sleep(1.0)
+        test.assertFalse(self.collided, "the chair touched the person: " + self.describe(t_person))
+        _, fx, fy, fyaw, _, _ = self.truth
+        front = (fx + front_offset * math.cos(fyaw), fy + front_offset * math.sin(fyaw))
+        return t_person, stop, math.hypot(person[0] - front[0], person[1] - front[1]) - radius
 
     def teleport(self, x, y, yaw):
         from wheelchair_sim.srv import SetPose

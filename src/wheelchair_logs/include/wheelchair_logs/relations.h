@@ -5,13 +5,13 @@
 #pragma once
 
 #include <wheelchair_core/pose2d.h>
-#include <wheelchair_slam/trajectory_io.h>
+#include <wheelchair_logs/timed_pose.h>
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
-namespace wheelchair_slam {
+namespace wheelchair_logs {
 
 struct Relation {
   double t1 = 0.0, t2 = 0.0;      ///< stamps in the relation file's time base
@@ -46,4 +46,4 @@ struct ErrorSummary {
 };
 ErrorSummary summarize(const std::vector<double>& values);
 
-}  // namespace wheelchair_slam
+}  // namespace wheelchair_logs

@@ -1,12 +1,12 @@
 // The Kuemmerle relation metric on trajectories whose errors are known by construction.
 #include <gtest/gtest.h>
-#include <wheelchair_slam/relations.h>
+#include <wheelchair_logs/relations.h>
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 
-namespace wheelchair_slam {
+namespace wheelchair_logs {
 namespace {
 
 using wheelchair_core::Pose2D;
@@ -57,4 +57,4 @@ TEST(Relations, StampsAreMatchedWithTheOffsetAndTheTolerance) {
 }
 
 }  // namespace
-}  // namespace wheelchair_slam
+}  // namespace wheelchair_logs

@@ -1,4 +1,4 @@
-#include <wheelchair_slam/relations.h>
+#include <wheelchair_logs/relations.h>
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace wheelchair_slam {
+namespace wheelchair_logs {
 
 using wheelchair_core::Pose2D;
 
@@ -97,4 +97,4 @@ ErrorSummary summarize(const std::vector<double>& values) {
   return s;
 }
 
-}  // namespace wheelchair_slam
+}  // namespace wheelchair_logs
