@@ -25,7 +25,7 @@ std::string format(const char* fmt, double value) {
 
 bool isActive(TrackerState s) {
   return s == TrackerState::kAligning || s == TrackerState::kTracking ||
-         s == TrackerState::kRotatingToGoal;
+         s == TrackerState::kReversing || s == TrackerState::kRotatingToGoal;
 }
 
 /// Internal model (section 4: the paper discretizes the dynamics with RK2): propagates x over
@@ -47,6 +47,8 @@ const char* toString(TrackerState state) {
       return "aligning";
     case TrackerState::kTracking:
       return "tracking";
+    case TrackerState::kReversing:
+      return "reversing";
     case TrackerState::kRotatingToGoal:
       return "rotating_to_goal";
     case TrackerState::kStopping:
@@ -68,19 +70,43 @@ PathTracker::PathTracker(const ChairParams& chair, const TrackerConfig& config)
   if (!problem.empty()) throw std::invalid_argument(problem);
 }
 
+std::shared_ptr<const OutputTrajectory> pieceTrajectory(const DrivenPiece& piece,
+                                                        const ChairParams& chair,
+                                                        const TrackerConfig& config,
+                                                        double initial_speed) {
+  if (!piece.reverse()) {
+    return std::make_shared<PathOutputTrajectory>(piece.path, chair.lookahead, chair.cm_offset,
+                                                  config.path_limits, config.limit_margin,
+                                                  initial_speed);
+  }
+  // In reverse the output point P_r = P - L_r h is L_r ahead along the direction of motion t
+  // (h = -t), and the rider (P_c = P - d h) is d ahead along it: the same reference with
+  // lookahead L_r and the rider offset -d.
+  PathLimits limits = config.path_limits;
+  limits.longitudinal.speed = std::min(limits.longitudinal.speed, config.reverse_max_speed);
+  return std::make_shared<PathOutputTrajectory>(piece.path, config.reverse_lookahead,
+                                                -chair.cm_offset, limits, config.limit_margin,
+                                                initial_speed);
+}
+
 PreparedPath preparePath(const std::vector<Pose2D>& path, const ChairParams& chair,
                          const TrackerConfig& config, double initial_speed) {
   PreparedPath out;
   out.initial_speed = initial_speed;
-  std::shared_ptr<const SmoothPath> smooth = drivenPath(path, out.rejection);
-  if (!smooth) return out;
+  std::optional<DrivenPlan> plan = drivenPlan(path, out.rejection);
+  if (!plan) return out;
   try {
-    out.trajectory = std::make_shared<PathOutputTrajectory>(smooth, chair.lookahead,
-                                                            chair.cm_offset, config.path_limits,
-                                                            config.limit_margin, initial_speed);
-    out.path = smooth;
+    for (size_t k = 0; k < plan->pieces.size(); ++k) {
+      const DrivenPiece& piece = plan->pieces[k];
+      // Only the first piece may start moving, and only if the chair already moves its way.
+      const double along = piece.reverse() ? -initial_speed : initial_speed;
+      out.trajectories.push_back(
+          pieceTrajectory(piece, chair, config, k == 0 ? std::max(0.0, along) : 0.0));
+    }
+    out.plan = std::make_shared<const DrivenPlan>(std::move(*plan));
   } catch (const std::exception& e) {
     out.rejection = std::string("path refused: ") + e.what();
+    out.trajectories.clear();
   }
   return out;
 }
@@ -91,14 +117,15 @@ std::string PathTracker::setPath(const std::vector<Pose2D>& path) {
 
 std::string PathTracker::setPreparedPath(const PreparedPath& prepared) {
   if (std::string refused = refuseIfHeld(); !refused.empty()) return refused;
-  if (!prepared.rejection.empty() || !prepared.path || !prepared.trajectory) {
+  if (!prepared.rejection.empty() || !prepared.plan ||
+      prepared.trajectories.size() != prepared.plan->pieces.size()) {
     const std::string reason =
         prepared.rejection.empty() ? "path not prepared" : prepared.rejection;
     abort(reason);
     return reason;
   }
-  path_ = prepared.path;
-  path_trajectory_ = prepared.trajectory;
+  plan_ = prepared.plan;
+  piece_trajectories_ = prepared.trajectories;
   path_pending_ = true;
   return "";
 }
@@ -106,7 +133,7 @@ std::string PathTracker::setPreparedPath(const PreparedPath& prepared) {
 double PathTracker::startSpeed() const {
   if (!isActive(state_)) return 0.0;
   const double speed = wd::bodyVelocity(last_state_.tail<2>(), chair_)(0);
-  return std::abs(speed) < kAtRestSpeed ? 0.0 : std::max(0.0, speed);
+  return std::abs(speed) < kAtRestSpeed ? 0.0 : speed;
 }
 
 void PathTracker::abort(const std::string& reason) {
@@ -134,6 +161,7 @@ void PathTracker::beginStop(const std::string& reason, const Eigen::Vector2d& et
                             TrackerState end_state) {
   phases_.clear();
   path_pending_ = false;
+  braking_for_direction_ = false;
   // Reaching the goal ends this path, it is no stop a newer path must respect: a path that
   // came during the final moments (the rider's next goal) is still driven.
   if (end_state != TrackerState::kGoalReached) ++stop_count_;
@@ -188,21 +216,34 @@ void PathTracker::startPhases(const State& x) {
   const Eigen::Vector3d p = wd::axlePose(x, chair_);
   const double speed = wd::bodyVelocity(x.tail<2>(), chair_)(0);
   const double l = chair_.lookahead;
-  const PathPoint start = path_->at(0.0), end = path_->at(path_->length());
   const bool at_rest = std::abs(speed) < kAtRestSpeed;
-  if (at_rest && rotatesBeforePath(*path_, p.z(), config_)) {
-    phases_.push_back({std::make_shared<RotationOutputTrajectory>(p.head<2>(), p.z(), start.heading,
-                                                                  l, config_.rotation_limits),
-                       TrackerState::kAligning});
+  const auto rotation = [&](const Eigen::Vector2d& centre, double from, double to) {
+    return Phase{
+        std::make_shared<RotationOutputTrajectory>(centre, from, to, l, config_.rotation_limits),
+        TrackerState::kAligning, l, false};
+  };
+  const std::vector<DrivenPiece>& pieces = plan_->pieces;
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    const DrivenPiece& piece = pieces[k];
+    if (k == 0 && at_rest && rotatesBeforePiece(piece, p.z(), config_))
+      phases_.push_back(rotation(p.head<2>(), p.z(), piece.startHeading()));
+    // At a cusp the chair has stopped with the last piece's end heading.
+    if (k > 0 && rotatesBeforePiece(piece, pieces[k - 1].endHeading(), config_, true))
+      phases_.push_back(
+          rotation(piece.path->at(0.0).position, pieces[k - 1].endHeading(), piece.startHeading()));
+    phases_.push_back({piece_trajectories_[k],
+                       piece.reverse() ? TrackerState::kReversing : TrackerState::kTracking,
+                       piece.reverse() ? -config_.reverse_lookahead : l, k + 1 < pieces.size()});
   }
-  phases_.push_back({path_trajectory_, TrackerState::kTracking});
-  goal_heading_ = path_->goalHeading();
-  if (rotatesToGoalHeading(*path_, config_)) {
-    phases_.push_back({std::make_shared<RotationOutputTrajectory>(
-                           end.position, end.heading, goal_heading_, l, config_.rotation_limits),
-                       TrackerState::kRotatingToGoal});
+  const DrivenPiece& last = pieces.back();
+  goal_heading_ = plan_->goal_heading;
+  if (rotatesToGoalHeading(*plan_, config_)) {
+    Phase goal =
+        rotation(last.path->at(last.path->length()).position, last.endHeading(), goal_heading_);
+    goal.state = TrackerState::kRotatingToGoal;
+    phases_.push_back(goal);
   } else {
-    goal_heading_ = end.heading;
+    goal_heading_ = last.endHeading();
   }
   state_ = phases_.front().state;
   reason_.clear();
@@ -231,6 +272,10 @@ OutputReference PathTracker::governedReference(double dt, double error) {
   rate_dot_ = std::clamp((target - rate_) / dt, -config_.governor_rate, config_.governor_rate);
   rate_ += rate_dot_ * dt;
   phase_time_ += rate_ * dt;
+  return scaledReference();
+}
+
+OutputReference PathTracker::scaledReference() const {
   const OutputReference r = phases_.front().trajectory->at(phase_time_);
   OutputReference out = r;
   out.velocity = rate_ * r.velocity;
@@ -240,13 +285,23 @@ OutputReference PathTracker::governedReference(double dt, double error) {
 
 void PathTracker::startFromHere(const State& x) {
   Phase& phase = phases_.front();
-  phase.trajectory =
-      startingFrom(phase.trajectory, outputPoint(x.head<5>(), chair_), config_.start_offset_limits);
+  phase.trajectory = startingFrom(phase.trajectory, outputPoint(x.head<5>(), chair_, phase.ell),
+                                  config_.start_offset_limits);
 }
 
 bool PathTracker::advancePhase(double dt, const State& x, double error) {
   if (phase_time_ < phases_.front().trajectory->duration()) return true;
+  const double rim_speed = x.tail<2>().cwiseAbs().maxCoeff() * chair_.wheel_radius;
   if (phases_.size() > 1) {
+    // A cusp: the reference has come to rest; the chair must too before it changes direction.
+    if (phases_.front().rest_before_next && rim_speed >= kSettledSpeed) {
+      overtime_ += dt;
+      if (overtime_ <= config_.goal_timeout) return true;
+      beginStop(format("did not come to rest at a cusp (rim speed %.3f m/s)", rim_speed),
+                x.tail<2>(), TrackerState::kAborted);
+      return false;
+    }
+    overtime_ = 0.0;
     phases_.erase(phases_.begin());
     state_ = phases_.front().state;
     phase_time_ = 0.0;
@@ -254,7 +309,6 @@ bool PathTracker::advancePhase(double dt, const State& x, double error) {
     return true;
   }
   const double heading_error = std::remainder(x(wd::kTheta) - goal_heading_, 2.0 * M_PI);
-  const double rim_speed = x.tail<2>().cwiseAbs().maxCoeff() * chair_.wheel_radius;
   if (error < config_.goal_position_tolerance &&
       std::abs(heading_error) < config_.goal_heading_tolerance && rim_speed < kSettledSpeed) {
     beginStop("", x.tail<2>(), TrackerState::kGoalReached);
@@ -268,7 +322,7 @@ bool PathTracker::advancePhase(double dt, const State& x, double error) {
     phases_.front() = {
         std::make_shared<RotationOutputTrajectory>(p.head<2>(), p.z(), goal_heading_,
                                                    chair_.lookahead, config_.rotation_limits),
-        TrackerState::kRotatingToGoal};
+        TrackerState::kRotatingToGoal, chair_.lookahead, false};
     state_ = TrackerState::kRotatingToGoal;
     phase_time_ = 0.0;
     overtime_ = 0.0;
@@ -286,18 +340,43 @@ bool PathTracker::advancePhase(double dt, const State& x, double error) {
 Eigen::Vector2d PathTracker::trackingTorque(const State& x, const OutputReference& ref) const {
   const Vector5 q = x.head<5>();
   const Eigen::Vector2d eta = x.tail<2>();
-  const Eigen::Vector2d y = outputPoint(q, chair_);
+  const double ell = phases_.front().ell;
+  const Eigen::Vector2d y = outputPoint(q, chair_, ell);
   if (!config_.dynamic_terms) {  // kinematic baseline: wheel speeds from y_dot = Phi eta
     const Eigen::Vector2d y_dot_cmd = ref.velocity + config_.natural_frequency * (ref.position - y);
-    const Eigen::Vector2d eta_cmd = decouplingMatrix(q, chair_).partialPivLu().solve(y_dot_cmd);
+    const Eigen::Vector2d eta_cmd =
+        decouplingMatrix(q, chair_, ell).partialPivLu().solve(y_dot_cmd);
     return config_.kinematic_wheel_gain * (eta_cmd - eta);
   }
   const Eigen::Vector2d v =
-      outerLaw(ref, y, outputVelocity(q, eta, chair_), gains_, config_.max_feedback_accel);
-  const Eigen::Vector2d u = linearizingInput(q, eta, v, chair_);
+      outerLaw(ref, y, outputVelocity(q, eta, chair_, ell), gains_, config_.max_feedback_accel);
+  const Eigen::Vector2d u = linearizingInput(q, eta, v, chair_, ell);
   Eigen::Vector2d tau = computedTorque(q, eta, u, chair_);
   if (config_.compensate_rolling_resistance) tau += rollingResistanceTorque(eta, chair_);
   return tau;
+}
+
+bool PathTracker::brakeForDirection(double now, double dt, const State& x, TrackerOutput& out) {
+  const double speed = wd::bodyVelocity(x.tail<2>(), chair_)(0);
+  const bool against =
+      std::abs(speed) >= kAtRestSpeed && (speed < 0.0) != plan_->pieces.front().reverse();
+  if (!against && !braking_for_direction_) return false;
+  if (!braking_for_direction_) {
+    braking_for_direction_ = true;
+    stop_.start(x.tail<2>(), last_body_accel_(0), last_body_accel_(1));
+  }
+  out.command = stop_.step(x.tail<2>(), dt);
+  out.command.torque = saturateTorque(out.command.torque, chair_.max_wheel_torque).torque;
+  out.command.brake = false;  // the path starts from rest right after
+  out.state = state_;
+  have_last_ = true;
+  last_time_ = now;
+  last_state_ = x;
+  last_torque_ = out.command.torque;
+  last_body_accel_.setZero();
+  if (!stop_.finished()) return true;
+  braking_for_direction_ = false;
+  return false;
 }
 
 TrackerOutput PathTracker::update(double now, const std::optional<PoseMeasurement>& pose,
@@ -325,13 +404,15 @@ TrackerOutput PathTracker::update(double now, const std::optional<PoseMeasuremen
   }
   const State x = estimateState(now, *pose, wheels.eta);
   if (resume) {
+    if (brakeForDirection(now, dt, x, out)) return out;
     if (state_ == TrackerState::kStopping) state_ = TrackerState::kIdle;
     startPhases(x);
     startFromHere(x);
     path_pending_ = false;
   }
   const Vector5 q = x.head<5>();
-  out.y = outputPoint(q, chair_);
+  out.output_offset = phases_.front().ell;
+  out.y = outputPoint(q, chair_, out.output_offset);
   const double error_before = (phases_.front().trajectory->at(phase_time_).position - out.y).norm();
   out.reference = governedReference(dt, error_before);
   const double error = (out.reference.position - out.y).norm();
@@ -339,7 +420,15 @@ TrackerOutput PathTracker::update(double now, const std::optional<PoseMeasuremen
     beginStop(format("tracking error %.2f m", error), x.tail<2>(), TrackerState::kAborted);
     return stopStep(dt, x.tail<2>());
   }
+  const std::shared_ptr<const OutputTrajectory> phase_before = phases_.front().trajectory;
   if (!advancePhase(dt, x, error)) return stopStep(dt, x.tail<2>());
+  if (phases_.front().trajectory != phase_before) {
+    // A new phase (perhaps with the output point on the other side of the axle, at a cusp):
+    // its own output and reference from this step on.
+    out.output_offset = phases_.front().ell;
+    out.y = outputPoint(q, chair_, out.output_offset);
+    out.reference = scaledReference();
+  }
 
   const SaturatedTorque sat =
       saturateTorque(trackingTorque(x, out.reference), chair_.max_wheel_torque);
@@ -356,7 +445,7 @@ TrackerOutput PathTracker::update(double now, const std::optional<PoseMeasuremen
   out.command.brake = false;
   out.state = state_;
   out.has_reference = true;
-  out.body_deviation = path_->distanceToPlanned(wd::axlePose(x, chair_).head<2>());
+  out.body_deviation = plan_->distanceToPlanned(wd::axlePose(x, chair_).head<2>());
   out.saturation_scale = sat.scale;
   out.reference_rate = rate_;
   return out;

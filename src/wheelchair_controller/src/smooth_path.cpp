@@ -83,16 +83,38 @@ std::string pathRejectionReason(const std::vector<Pose2D>& poses, double min_len
 }
 
 SmoothPath::SmoothPath(const std::vector<Pose2D>& poses, double spacing,
-                       double smoothing_half_window)
+                       double smoothing_half_window, const CuspEnds& cusps)
     : spacing_(spacing) {
   const std::string reason = pathRejectionReason(poses, 2.0 * kMinPointSpacing);
   if (!reason.empty()) throw std::invalid_argument("SmoothPath: " + reason);
   planned_ = distinctPoints(poses);
   goal_heading_ = poses.back().yaw;
   const int half = std::max(0, static_cast<int>(std::round(smoothing_half_window / spacing)));
-  // Smooth twice (a triangular kernel), then resample so the spacing is uniform again.
   std::vector<Eigen::Vector2d> pts = resample(planned_, spacing);
-  pts = resample(movingAverage(movingAverage(pts, half), half), spacing);
+  // A cusp end is extended by the point reflection of the path's last metres through the end
+  // point (an odd extension): the symmetric smoothing then keeps the end point exactly, where
+  // the next piece starts, and the curvature falls smoothly to zero there (no ragged curvature
+  // of a shrinking window), so the chair stops and starts on a straight.
+  const size_t extension = 2 * static_cast<size_t>(half);
+  const auto reflected = [&](const Eigen::Vector2d& end, auto first, auto last) {
+    std::vector<Eigen::Vector2d> out;
+    for (auto it = first; it != last && out.size() < extension; ++it)
+      out.push_back(2.0 * end - *it);
+    return out;
+  };
+  std::vector<Eigen::Vector2d> before, after;
+  if (cusps.start) {
+    before = reflected(pts.front(), pts.begin() + 1, pts.end());
+    std::reverse(before.begin(), before.end());
+  }
+  if (cusps.end) after = reflected(pts.back(), pts.rbegin() + 1, pts.rend());
+  const size_t n = pts.size();
+  pts.insert(pts.begin(), before.begin(), before.end());
+  pts.insert(pts.end(), after.begin(), after.end());
+  // Smooth twice (a triangular kernel), then resample so the spacing is uniform again.
+  pts = movingAverage(movingAverage(pts, half), half);
+  pts = std::vector<Eigen::Vector2d>(pts.begin() + before.size(), pts.begin() + before.size() + n);
+  pts = resample(pts, spacing);
   const double h = polylineLength(pts) / (pts.size() - 1);
 
   std::vector<double> xs, ys;

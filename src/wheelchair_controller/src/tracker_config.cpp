@@ -25,7 +25,12 @@ std::string TrackerConfig::validate() const {
       .check(limit_margin > 0.0 && limit_margin <= 1.0, "limit_margin must lie in (0, 1]");
   checkLimits(checks, "rotation", rotation_limits);
   checkLimits(checks, "start offset", start_offset_limits, false);
-  checks.positive("start_heading_tolerance", start_heading_tolerance)
+  checks.positive("reverse_lookahead", reverse_lookahead)
+      .check(reverse_max_speed > 0.0 && reverse_max_speed <= 0.3,
+             "reverse_max_speed must lie in (0, 0.3] m/s (got " +
+                 std::to_string(reverse_max_speed) + ")");
+  checks.positive("cusp_heading_tolerance", cusp_heading_tolerance)
+      .positive("start_heading_tolerance", start_heading_tolerance)
       .positive("goal_position_tolerance", goal_position_tolerance)
       .positive("goal_heading_tolerance", goal_heading_tolerance)
       .positive("goal_timeout", goal_timeout)
@@ -51,6 +56,8 @@ void readTrackerConfig(wheelchair_core::ConfigReader& reader, TrackerConfig& con
   reader.read("max_speed", config.path_limits.longitudinal.speed);
   reader.read("max_accel", config.path_limits.longitudinal.accel);
   reader.read("max_jerk", config.path_limits.longitudinal.jerk);
+  reader.read("reverse_lookahead", config.reverse_lookahead);
+  reader.read("reverse_max_speed", config.reverse_max_speed);
   reader.read("stale_pose_timeout", config.stale_pose_timeout);
   reader.read("stale_odometry_timeout", config.stale_odometry_timeout);
   reader.read("pose_jump", config.pose_jump);

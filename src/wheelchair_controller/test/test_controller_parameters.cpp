@@ -35,7 +35,7 @@ TEST(ControllerParameters, EveryKeyFillsItsField) {
       "{chair_file: /tmp/chair.yaml, map_frame: world, base_frame: base, rate: 25,"
       " natural_frequency: 2.0, damping: 0.8, max_speed: 0.6, max_accel: 0.4, max_jerk: 0.9,"
       " stale_pose_timeout: 0.5, stale_odometry_timeout: 0.4, pose_jump: 0.3,"
-      " dynamic_terms: false}");
+      " dynamic_terms: false, reverse_lookahead: 0.2, reverse_max_speed: 0.25}");
   EXPECT_EQ(p.chair_file, "/tmp/chair.yaml");
   EXPECT_EQ(p.map_frame, "world");
   EXPECT_EQ(p.base_frame, "base");
@@ -51,6 +51,8 @@ TEST(ControllerParameters, EveryKeyFillsItsField) {
   EXPECT_DOUBLE_EQ(p.tracker.stale_odometry_timeout, 0.4);
   EXPECT_DOUBLE_EQ(p.tracker.pose_jump, 0.3);
   EXPECT_FALSE(p.tracker.dynamic_terms);
+  EXPECT_DOUBLE_EQ(p.tracker.reverse_lookahead, 0.2);
+  EXPECT_DOUBLE_EQ(p.tracker.reverse_max_speed, 0.25);
 }
 
 TEST(ControllerParameters, DefaultsAreTheTrackersOwn) {
@@ -69,6 +71,9 @@ TEST(ControllerParameters, RefusesTheOldChairKeyAnUnknownKeyAndAnInvalidValue) {
   EXPECT_NE(unknown.find("unknown parameter 'natural_frequncy'"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find("natural_frequency"), std::string::npos) << "names the known keys";
   EXPECT_NE(refusal("{rate: 0}").find("rate must be positive"), std::string::npos);
+  // Reverse faster than 0.3 m/s is refused (issue 24: backing up sees less and steers with the
+  // tail).
+  EXPECT_NE(refusal("{reverse_max_speed: 0.5}").find("reverse_max_speed"), std::string::npos);
   EXPECT_NE(refusal("{max_accel: -0.5}").find("path accel must be positive"), std::string::npos);
   EXPECT_NE(refusal("{dynamic_terms: often}").find("dynamic_terms"), std::string::npos);
 }

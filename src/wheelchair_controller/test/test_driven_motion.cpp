@@ -21,13 +21,7 @@ namespace {
 
 wd::ChairParams chair() { return wd::test::shippedChair(); }
 
-wc::PlantConfig mismatchedPlant() {
-  wc::PlantConfig plant;
-  plant.chair = chair();
-  plant.chair.total_mass += 15.0;
-  plant.chair.body_inertia *= 1.15;
-  return plant;
-}
+wc::PlantConfig mismatchedPlant() { return wc::heavierRiderPlant(chair()); }
 
 /// How far the body at `pose` is from the body at the nearest sweep pose: the largest distance
 /// between corresponding footprint vertices [m].
@@ -55,6 +49,14 @@ bool entered(const wc::ClosedLoopResult& r, wc::TrackerState state) {
                      [&](const wc::TraceSample& s) { return s.state == state; });
 }
 
+/// The tracker's first active phase is an in-place alignment (the start rotation; alignments at
+/// cusps come later).
+bool alignsFirst(const wc::ClosedLoopResult& r) {
+  for (const wc::TraceSample& s : r.trace)
+    if (s.state != wc::TrackerState::kIdle) return s.state == wc::TrackerState::kAligning;
+  return false;
+}
+
 struct Case {
   std::string name;
   std::vector<Pose2D> path;
@@ -71,6 +73,21 @@ std::vector<Case> cases() {
   out.push_back({"goal_heading_a_quarter_turn_left",
                  wc::PathBuilder({0.0, 0.0, 0.0}).straight(2.0).posesWithGoalHeading(M_PI / 2),
                  {0.0, 0.0, 0.0}});
+  // Reverse pieces and cusps: backing out of a door with a quarter turn, then driving off; a
+  // three-point turn; backing up from a start facing away (rotation, then reverse).
+  out.push_back({"back_out_and_drive_off",
+                 wc::PathBuilder({1.0, 2.0, M_PI / 2})
+                     .reverse()
+                     .straight(0.5)
+                     .arc(1.0, -M_PI / 2)
+                     .forward()
+                     .straight(2.0)
+                     .poses(),
+                 {1.0, 2.0, M_PI / 2}});
+  out.push_back({"three_point_turn", wc::threePointTurnPath(), {0.0, 0.0, 0.0}});
+  out.push_back({"back_up_after_turning",
+                 wc::PathBuilder({0.0, 0.0, 0.0}).reverse().straight(1.5).poses(),
+                 {0.0, 0.0, 1.5}});
   return out;
 }
 
@@ -87,7 +104,8 @@ TEST(DrivenMotion, TheTrackersBodyStaysOnTheSweepItExports) {
     double worst = 0.0;
     for (const wc::TraceSample& s : r.trace) {
       const Pose2D truth{s.pose.x(), s.pose.y(), s.pose.z()};
-      worst = std::max(worst, bodyDistanceToSweep(truth, sweep, model.footprint));
+      const double d = bodyDistanceToSweep(truth, sweep, model.footprint);
+      worst = std::max(worst, d);
     }
     // Measured 1.0-2.8 cm (slalom); the gate keeps 5 cm around the sweep.
     EXPECT_LT(worst, 0.035) << c.name << ": the body left the sweep the gate checked";
@@ -96,7 +114,14 @@ TEST(DrivenMotion, TheTrackersBodyStaysOnTheSweepItExports) {
     EXPECT_EQ(hasPhase(sweep, wc::SweepPose::Phase::kGoalRotation),
               entered(r, wc::TrackerState::kRotatingToGoal))
         << c.name;
-    if (entered(r, wc::TrackerState::kAligning)) {
+    EXPECT_EQ(std::any_of(sweep.begin(), sweep.end(),
+                          [](const wc::SweepPose& s) {
+                            return s.phase == wc::SweepPose::Phase::kPath &&
+                                   s.direction == wheelchair_core::Direction::kReverse;
+                          }),
+              entered(r, wc::TrackerState::kReversing))
+        << c.name << ": reverse in the sweep exactly when the tracker reverses";
+    if (alignsFirst(r)) {
       EXPECT_GT(std::count_if(sweep.begin(), sweep.end(),
                               [](const wc::SweepPose& s) {
                                 return s.phase == wc::SweepPose::Phase::kStartRotation;
@@ -114,8 +139,35 @@ TEST(DrivenMotion, ARefusedPathHasNoSweep) {
       << "shorter than the controller's minimum path length";
   EXPECT_TRUE(wc::executedSweep({0.0, 0.0, 0.0}, {{0.0, 0.0, 0.0}, {NAN, 0.0, 0.0}}).empty());
   std::string rejection;
-  EXPECT_FALSE(wc::drivenPath({{0.0, 0.0, 0.0}, {0.005, 0.0, 0.0}}, rejection));
+  EXPECT_FALSE(wc::drivenPlan({{0.0, 0.0, 0.0}, {0.005, 0.0, 0.0}}, rejection));
   EXPECT_NE(rejection.find("zero-length"), std::string::npos) << rejection;
+}
+
+TEST(DrivenMotion, AReversePieceFacesAgainstItsMotionAndTheSweepStopsAtTheCusp) {
+  // Back 1 m facing +x, then 1 m forward: the sweep's body faces +x all along (no turn), the
+  // reverse poses move towards -x, the forward ones towards +x, and they meet at the cusp.
+  const std::vector<Pose2D> path =
+      wc::PathBuilder({0.0, 0.0, 0.0}).reverse().straight(1.0).forward().straight(1.0).poses();
+  std::string rejection;
+  const std::optional<wc::DrivenPlan> plan = wc::drivenPlan(path, rejection);
+  ASSERT_TRUE(plan) << rejection;
+  ASSERT_EQ(plan->pieces.size(), 2u);
+  EXPECT_EQ(plan->cusps(), 1u);
+  EXPECT_TRUE(plan->pieces[0].reverse());
+  EXPECT_NEAR(std::remainder(plan->pieces[0].startHeading(), 2 * M_PI), 0.0, 1e-6);
+  EXPECT_NEAR(std::remainder(plan->pieces[1].startHeading(), 2 * M_PI), 0.0, 1e-6);
+  const std::vector<wc::SweepPose> sweep = wc::executedSweep({0.0, 0.0, 0.0}, path);
+  ASSERT_FALSE(sweep.empty());
+  double min_x = 1e9;
+  for (const wc::SweepPose& s : sweep) {
+    EXPECT_NEAR(std::remainder(s.pose.yaw, 2 * M_PI), 0.0, 1e-6);
+    min_x = std::min(min_x, s.pose.x);
+    EXPECT_EQ(s.piece == 0, s.direction == wheelchair_core::Direction::kReverse);
+  }
+  EXPECT_NEAR(min_x, -1.0, 0.01);
+  EXPECT_NEAR(sweep.back().pose.x, 0.0, 0.01);
+  EXPECT_FALSE(hasPhase(sweep, wc::SweepPose::Phase::kStartRotation) &&
+               sweep.front().pose.yaw != sweep[1].pose.yaw);
 }
 
 TEST(DrivenMotion, SweepPosesAreAtMostTheSamplingApart) {

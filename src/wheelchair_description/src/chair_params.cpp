@@ -54,7 +54,10 @@ std::string ChairParams::validate() const {
   const std::string polygon = wheelchair_core::polygonProblem(footprint);
   checks.check(polygon.empty(), named("footprint") + ": " + polygon);
   const std::pair<double, const char*> mount[] = {
-      {laser_x, "laser/x"}, {laser_y, "laser/y"}, {laser_z, "laser/z"}, {laser_yaw, "laser/yaw"}};
+      {laser_x, "laser/x"},           {laser_y, "laser/y"},
+      {laser_z, "laser/z"},           {laser_yaw, "laser/yaw"},
+      {rear_laser_x, "rear_laser/x"}, {rear_laser_y, "rear_laser/y"},
+      {rear_laser_z, "rear_laser/z"}, {rear_laser_yaw, "rear_laser/yaw"}};
   for (const auto& [value, name] : mount)
     checks.check(std::isfinite(value), named(name) + " is not finite");
   return checks.result();
@@ -81,6 +84,11 @@ void readChairParams(wheelchair_core::ConfigReader& reader, ChairParams& p) {
   reader.require("laser/y", p.laser_y);
   reader.require("laser/z", p.laser_z);
   reader.require("laser/yaw", p.laser_yaw);
+  requireGroup(reader, "rear_laser", "{x, y, z, yaw}");
+  reader.require("rear_laser/x", p.rear_laser_x);
+  reader.require("rear_laser/y", p.rear_laser_y);
+  reader.require("rear_laser/z", p.rear_laser_z);
+  reader.require("rear_laser/yaw", p.rear_laser_yaw);
 }
 
 ChairParams loadChairParams(const std::string& yaml_path) {

@@ -19,7 +19,8 @@ constexpr double kCasterInset = 0.12;     // caster axle ahead of the rear of th
 constexpr double kSeatHeight = 0.50;      // seat surface above the floor
 constexpr double kBackrestHeight = 1.00;  // top of the backrest above the floor
 constexpr double kBodyHeight = 1.00;      // height used for the body's roll/pitch inertia
-constexpr double kLaserBox[3] = {0.155, 0.155, 0.185};  // SICK LMS1xx-class housing
+constexpr double kLaserBox[3] = {0.155, 0.155, 0.185};   // SICK LMS1xx-class housing
+constexpr double kRearLaserBox[3] = {0.10, 0.10, 0.15};  // nanoScan3-class safety scanner
 
 /// Shortest text that reads back as `value`; sums of round numbers that differ from a
 /// 1e-9 grid point by round-off only (0.06999999999999999) are written as that point (0.07).
@@ -154,6 +155,11 @@ std::string chairUrdf(const ChairParams& p) {
                                   box(kLaserBox[0], kLaserBox[1], kLaserBox[2]), "sensor"));
   out << joint("laser_joint", "fixed", kBaseLinkFrame, kLaserFrame,
                origin(p.laser_x, p.laser_y, p.laser_z, 0.0, p.laser_yaw));
+  out << link(kRearLaserFrame,
+              visual(origin(0.0, 0.0, 0.0),
+                     box(kRearLaserBox[0], kRearLaserBox[1], kRearLaserBox[2]), "sensor"));
+  out << joint("rear_laser_joint", "fixed", kBaseLinkFrame, kRearLaserFrame,
+               origin(p.rear_laser_x, p.rear_laser_y, p.rear_laser_z, 0.0, p.rear_laser_yaw));
   out << "</robot>\n";
   return out.str();
 }

@@ -94,7 +94,8 @@ TEST(ChairParams, EachKeyFillsItsOwnMember) {
                          "max_wheel_torque: 41\nmax_speed: 1.2\nrolling_resistance: 0.02\n"
                          "width: 0.6\nlength: 1.0\n"
                          "footprint: [[0.3, 0.4], [-0.6, 0.4], [-0.6, -0.4], [0.3, -0.4]]\n"
-                         "laser: {x: 0.31, y: -0.02, z: 0.12, yaw: 0.1}\n";
+                         "laser: {x: 0.31, y: -0.02, z: 0.12, yaw: 0.1}\n"
+                         "rear_laser: {x: -0.71, y: 0.03, z: 0.09, yaw: 3.0}\n";
   const ChairParams p = loadChairParams(path);
   EXPECT_EQ(p.total_mass, 101.0);
   EXPECT_EQ(p.wheel_mass, 3.1);
@@ -116,6 +117,10 @@ TEST(ChairParams, EachKeyFillsItsOwnMember) {
   EXPECT_EQ(p.laser_y, -0.02);
   EXPECT_EQ(p.laser_z, 0.12);
   EXPECT_EQ(p.laser_yaw, 0.1);
+  EXPECT_EQ(p.rear_laser_x, -0.71);
+  EXPECT_EQ(p.rear_laser_y, 0.03);
+  EXPECT_EQ(p.rear_laser_z, 0.09);
+  EXPECT_EQ(p.rear_laser_yaw, 3.0);
   EXPECT_DOUBLE_EQ(p.inscribedRadius(), 0.3);
   EXPECT_DOUBLE_EQ(p.circumscribedRadius(), std::hypot(0.6, 0.4));
 }
@@ -140,6 +145,9 @@ TEST(ChairParams, EachMissingKeyIsNamed) {
   expectErrorNaming(chairFileWith("footprint", ""), "footprint");
   expectErrorNaming(chairFileWith("laser", ""), "laser");
   expectErrorNaming(chairFileWith("laser", "laser: {x: 0.28, y: 0.0, yaw: 0.0}"), "laser/z");
+  expectErrorNaming(chairFileWith("rear_laser", ""), "rear_laser");
+  expectErrorNaming(chairFileWith("rear_laser", "rear_laser: {x: -0.75, y: 0.0, z: 0.08}"),
+                    "rear_laser/yaw");
 }
 
 TEST(ChairParams, EachNonFiniteValueIsNamed) {
@@ -150,6 +158,9 @@ TEST(ChairParams, EachNonFiniteValueIsNamed) {
                     "laser/x");
   expectErrorNaming(chairFileWith("laser", "laser: {x: 0.2, y: 0.0, z: 0.25, yaw: .inf}"),
                     "laser/yaw");
+  expectErrorNaming(
+      chairFileWith("rear_laser", "rear_laser: {x: .nan, y: 0.0, z: 0.08, yaw: 3.1416}"),
+      "rear_laser/x");
   expectErrorNaming(chairFileWith("footprint", "footprint: [[0.3, .nan], [-0.8, 0.3], [0, -1]]"),
                     "footprint");
 }

@@ -45,6 +45,13 @@ TEST(DescriptionPublisher, LaserMountArrivesOnTf) {
   EXPECT_NEAR(laser.transform.translation.y, p.laser_y, 1e-9);
   EXPECT_NEAR(laser.transform.translation.z, p.laser_z, 1e-9);
   EXPECT_NEAR(wheelchair_ros::yawOf(laser.transform.rotation), p.laser_yaw, 1e-9);
+  // The rear laser, looking behind the chair (it guards reverse motion).
+  const auto rear = waitForTransform(buffer, "base_link", "rear_laser");
+  EXPECT_NEAR(rear.transform.translation.x, p.rear_laser_x, 1e-9);
+  EXPECT_NEAR(rear.transform.translation.z, p.rear_laser_z, 1e-9);
+  EXPECT_NEAR(
+      std::remainder(wheelchair_ros::yawOf(rear.transform.rotation) - p.rear_laser_yaw, 2 * M_PI),
+      0.0, 1e-9);
   const auto base = waitForTransform(buffer, "base_footprint", "base_link");
   EXPECT_NEAR(base.transform.translation.z, p.wheel_radius, 1e-9);
   // The whole chair, floor to sensor, in one tree.

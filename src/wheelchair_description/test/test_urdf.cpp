@@ -41,6 +41,21 @@ double yawOf(const urdf::Pose& pose) {
 }
 
 /// Checks everything the rest of the stack relies on against the chair's parameters.
+/// A fixed joint from base_link to `child` at (x, y, z) with yaw `yaw` (modulo 2 pi).
+void expectSensorMount(const urdf::Model& model, const std::string& joint, const std::string& child,
+                       double x, double y, double z, double yaw) {
+  const auto j = model.getJoint(joint);
+  ASSERT_TRUE(j) << joint;
+  EXPECT_EQ(j->type, urdf::Joint::FIXED);
+  EXPECT_EQ(j->parent_link_name, "base_link");
+  EXPECT_EQ(j->child_link_name, child);
+  const auto& mount = j->parent_to_joint_origin_transform;
+  EXPECT_DOUBLE_EQ(mount.position.x, x) << joint;
+  EXPECT_DOUBLE_EQ(mount.position.y, y) << joint;
+  EXPECT_DOUBLE_EQ(mount.position.z, z) << joint;
+  EXPECT_NEAR(std::remainder(yawOf(mount) - yaw, 2 * M_PI), 0.0, 1e-12) << joint;
+}
+
 void expectModelMatchesChair(const urdf::Model& model, const ChairParams& p) {
   ASSERT_TRUE(model.getRoot());
   EXPECT_EQ(model.getRoot()->name, "base_link");  // odom -> base_link owns the chair's tree
@@ -76,17 +91,10 @@ void expectModelMatchesChair(const urdf::Model& model, const ChairParams& p) {
       model.getJoint("left_wheel_joint")->parent_to_joint_origin_transform.position.y -
           model.getJoint("right_wheel_joint")->parent_to_joint_origin_transform.position.y,
       2.0 * p.half_track);
-  // The laser at its mount.
-  const auto laser = model.getJoint("laser_joint");
-  ASSERT_TRUE(laser);
-  EXPECT_EQ(laser->type, urdf::Joint::FIXED);
-  EXPECT_EQ(laser->parent_link_name, "base_link");
-  EXPECT_EQ(laser->child_link_name, "laser");
-  const auto& mount = laser->parent_to_joint_origin_transform;
-  EXPECT_DOUBLE_EQ(mount.position.x, p.laser_x);
-  EXPECT_DOUBLE_EQ(mount.position.y, p.laser_y);
-  EXPECT_DOUBLE_EQ(mount.position.z, p.laser_z);
-  EXPECT_NEAR(yawOf(mount), p.laser_yaw, 1e-12);
+  // The lasers at their mounts: the front one, and the rear one looking behind.
+  expectSensorMount(model, "laser_joint", "laser", p.laser_x, p.laser_y, p.laser_z, p.laser_yaw);
+  expectSensorMount(model, "rear_laser_joint", "rear_laser", p.rear_laser_x, p.rear_laser_y,
+                    p.rear_laser_z, p.rear_laser_yaw);
   // Body + rider at P_c, d behind P, with M_T and I_T.
   const auto body = model.getJoint("body_joint");
   ASSERT_TRUE(body);
@@ -137,6 +145,8 @@ TEST(Urdf, GeneratedModelFollowsOtherChairs) {
     p.laser_y = u(rng) - 1.0;
     p.laser_z *= u(rng);
     p.laser_yaw = 3.0 * (u(rng) - 1.0);
+    p.rear_laser_x *= u(rng);
+    p.rear_laser_yaw = M_PI * u(rng);
     expectModelMatchesChair(parse(chairUrdf(p)), p);
   }
 }
@@ -145,7 +155,7 @@ TEST(Urdf, AllLinksHangFromBaseFootprint) {
   const urdf::Model model = parse(readFile(kCommittedUrdf));
   std::vector<urdf::LinkSharedPtr> links;
   model.getLinks(links);
-  EXPECT_EQ(links.size(), 8u);  // footprint, base, body, 2 wheels, 2 casters, laser
+  EXPECT_EQ(links.size(), 9u);  // footprint, base, body, 2 wheels, 2 casters, 2 lasers
   for (const auto& link : links) {
     int depth = 0;
     for (auto l = link; l->getParent(); l = l->getParent()) ++depth;

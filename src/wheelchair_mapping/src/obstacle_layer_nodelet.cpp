@@ -1,5 +1,6 @@
-// The live obstacle layer as a nodelet of the chair process: fuses /scan at the localized laser
-// pose (tf2 ~map_frame -> laser, while /localization/status says localized) into an
+// The live obstacle layer as a nodelet of the chair process: fuses /scan and /rear_scan (the
+// rear laser behind the chair) at the localized laser pose (tf2 ~map_frame -> the scan's frame,
+// while /localization/status says localized) into an
 // ObstacleLayer on the grid of /map, and publishes it, latched, on /obstacles
 // (nav_msgs/OccupancyGrid, same geometry as /map: 100 obstacle, 0 seen free, -1 no evidence)
 // every ~publish_period s when it changed, decay included. A new /map starts a new layer.
@@ -33,6 +34,7 @@ class ObstacleLayerNodelet : public nodelet::Nodelet {
     map_sub_ = nh.subscribe("map", 1, &ObstacleLayerNodelet::onMap, this);
     status_sub_ = nh.subscribe("localization/status", 1, &ObstacleLayerNodelet::onStatus, this);
     scan_sub_ = nh.subscribe("scan", 5, &ObstacleLayerNodelet::onScan, this);
+    rear_scan_sub_ = nh.subscribe("rear_scan", 5, &ObstacleLayerNodelet::onScan, this);
     timer_ = nh.createWallTimer(ros::WallDuration(config_.publish_period),
                                 [this](const ros::WallTimerEvent&) { publish(); });
   }
@@ -98,7 +100,7 @@ class ObstacleLayerNodelet : public nodelet::Nodelet {
   tf2_ros::Buffer tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   ros::Publisher pub_;
-  ros::Subscriber map_sub_, status_sub_, scan_sub_;
+  ros::Subscriber map_sub_, status_sub_, scan_sub_, rear_scan_sub_;
   ros::WallTimer timer_;
 };
 

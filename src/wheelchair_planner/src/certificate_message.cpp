@@ -32,6 +32,10 @@ wheelchair_msgs::PlanCertificate toPlanCertificateMsg(const Certificate& c,
   m.first_stage_sweep = c.first_stage_sweep;
   m.search_expansions = c.search_expansions;
   m.search_time = c.search_time;
+  m.cusps = c.cusps;
+  m.reversed_length = c.reversed_length;
+  m.segment_reverse.assign(c.segment_reverse.begin(), c.segment_reverse.end());
+  m.segment_clearance.assign(c.segment_clearance.begin(), c.segment_clearance.end());
   return m;
 }
 

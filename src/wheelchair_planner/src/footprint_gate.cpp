@@ -1,5 +1,7 @@
 #include <wheelchair_planner/footprint_gate.h>
 
+#include <wheelchair_core/path_direction.h>
+
 #include <algorithm>
 #include <sstream>
 
@@ -8,7 +10,13 @@ namespace wheelchair_planner {
 std::string FootprintGateParams::validate() const {
   wheelchair_core::ConfigChecks checks;
   checks.positive("footprint_search_time", search.time_limit)
-      .positive("footprint_goal_tolerance", search.goal_tolerance);
+      .positive("footprint_goal_tolerance", search.goal_tolerance)
+      .check(search.max_expansions > 0, "footprint_search_expansions must be positive")
+      .check(search.max_cusps >= 0, "footprint_max_cusps must be >= 0")
+      .nonNegative("footprint_max_reverse_length", search.max_reverse_length)
+      .check(search.reverse_cost >= 1.0,
+             "footprint_reverse_cost must be >= 1 (forwards is preferred)")
+      .nonNegative("footprint_cusp_cost", search.cusp_cost);
   const std::string controller = sweep.controller.validate();
   checks.check(controller.empty(), controller);
   return checks.result();
@@ -16,12 +24,18 @@ std::string FootprintGateParams::validate() const {
 
 namespace {
 
-void recordSweep(const SweepCheck& check, Certificate& cert) {
+void recordSweep(const SweepCheck& check, const std::vector<Pose2D>& plan, Certificate& cert) {
   cert.footprint_checked = true;
   cert.footprint_clearance = check.min_clearance;
   cert.footprint_clearance_x = check.contact.x;
   cert.footprint_clearance_y = check.contact.y;
   cert.sweep_poses = static_cast<int>(check.poses);
+  cert.cusps = static_cast<int>(wheelchair_core::cuspCount(plan));
+  cert.reversed_length = wheelchair_core::reversedLength(plan);
+  cert.segment_reverse.clear();
+  for (const wheelchair_core::PathPiece& piece : wheelchair_core::splitAtCusps(plan))
+    cert.segment_reverse.push_back(piece.direction == wheelchair_core::Direction::kReverse);
+  cert.segment_clearance = check.piece_clearance;
 }
 
 }  // namespace
@@ -49,7 +63,7 @@ bool enforceFootprint(const FootprintChecker& checker, const FootprintGateParams
     return false;
   }
   const SweepCheck first = checkSweep(checker, params.sweep.sweep(start, plan), rule);
-  recordSweep(first, cert);
+  recordSweep(first, plan, cert);
   if (first.ok) return true;
   cert.first_stage_sweep = first.reason;
   if (!params.repair) {
@@ -65,7 +79,7 @@ bool enforceFootprint(const FootprintChecker& checker, const FootprintGateParams
   }
   plan = std::move(found.path);
   cert.path_stage = "footprint_search";
-  recordSweep(found.sweep, cert);
+  recordSweep(found.sweep, plan, cert);
   return true;
 }
 

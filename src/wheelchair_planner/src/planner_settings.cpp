@@ -25,6 +25,12 @@ void readPlannerSettings(wheelchair_core::ConfigReader& reader, PlannerSettings&
   reader.read("footprint_repair", settings.gate.repair);
   reader.read("footprint_search_time", settings.gate.search.time_limit);
   reader.read("footprint_goal_tolerance", settings.gate.search.goal_tolerance);
+  reader.read("footprint_search_expansions", settings.gate.search.max_expansions);
+  reader.read("footprint_reverse", settings.gate.search.reverse);
+  reader.read("footprint_max_cusps", settings.gate.search.max_cusps);
+  reader.read("footprint_max_reverse_length", settings.gate.search.max_reverse_length);
+  reader.read("footprint_reverse_cost", settings.gate.search.reverse_cost);
+  reader.read("footprint_cusp_cost", settings.gate.search.cusp_cost);
 }
 
 }  // namespace wheelchair_planner

@@ -1,6 +1,9 @@
 #include "search_attempt.h"
 
+#include <wheelchair_core/kinematics.h>
+
 #include "geodesic_distance.h"
+#include "reeds_shepp.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,25 +16,26 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The last straight piece to the goal must continue the arrival heading: a piece off to the
-// side or behind would make the chair turn sharply on the spot just before the goal (the
-// controller follows it), moving the axle and its rear sideways.
-bool joinsGoalAhead(const Pose2D& arrival, const Pose2D& goal, const FootprintSearchParams& p) {
+// The last straight piece to the goal must continue the arrival's direction of motion (ahead
+// forwards, behind in reverse): a piece off to the side or against it would make the chair turn
+// sharply on the spot just before the goal (the controller follows it), moving the axle and its
+// rear sideways.
+bool joinsGoalAlongTheMotion(const Pose2D& arrival, bool reverse, const Pose2D& goal,
+                             const FootprintSearchParams& p) {
   const double dx = goal.x - arrival.x, dy = goal.y - arrival.y;
   const double distance = std::hypot(dx, dy);
   if (distance > p.goal_tolerance) return false;
   if (distance <= p.goal_join_slack) return true;
-  const double ahead = std::cos(arrival.yaw) * dx + std::sin(arrival.yaw) * dy;
-  const double aside = -std::sin(arrival.yaw) * dx + std::cos(arrival.yaw) * dy;
+  const double motion = arrival.yaw + (reverse ? M_PI : 0.0);
+  const double ahead = std::cos(motion) * dx + std::sin(motion) * dy;
+  const double aside = -std::sin(motion) * dx + std::cos(motion) * dy;
   return ahead > 0.0 && std::abs(aside) <= std::tan(p.goal_join_angle) * ahead;
 }
 
-/// The pose after `d` metres along an arc of curvature `kappa` (straight for kappa = 0).
+/// The pose after `d` metres along an arc of curvature `kappa` (straight for kappa = 0); d < 0
+/// drives it in reverse (the heading changes by kappa d).
 Pose2D arcEnd(const Pose2D& p, double kappa, double d) {
-  if (std::abs(kappa) < 1e-9) return {p.x + d * std::cos(p.yaw), p.y + d * std::sin(p.yaw), p.yaw};
-  const double yaw = p.yaw + kappa * d;
-  return {p.x + (std::sin(yaw) - std::sin(p.yaw)) / kappa,
-          p.y + (std::cos(p.yaw) - std::cos(yaw)) / kappa, yaw};
+  return wheelchair_core::integrateArc(p, {d, kappa * d});
 }
 
 }  // namespace
@@ -94,12 +98,13 @@ double SearchAttempt::heuristic(const Pose2D& p) const {
   return attempt_.heuristic_weight * h_[cs_.index(ix, iy)];
 }
 
-int64_t SearchAttempt::key(const Pose2D& p) const {
+int64_t SearchAttempt::key(const Pose2D& p, bool reverse) const {
   const int64_t ix = static_cast<int64_t>(std::floor(p.x / params_.xy_bin)) + (1 << 20);
   const int64_t iy = static_cast<int64_t>(std::floor(p.y / params_.xy_bin)) + (1 << 20);
   int64_t it = static_cast<int64_t>(std::lround(p.yaw / bin_angle_)) % params_.heading_bins;
   if (it < 0) it += params_.heading_bins;
-  return (ix * (int64_t{1} << 22) + iy) * params_.heading_bins + it;
+  // The direction of arrival is part of the state: going on the same way costs no cusp.
+  return ((ix * (int64_t{1} << 22) + iy) * params_.heading_bins + it) * 2 + (reverse ? 1 : 0);
 }
 
 double SearchAttempt::penalty(double c) const {
@@ -109,7 +114,7 @@ double SearchAttempt::penalty(double c) const {
 }
 
 void SearchAttempt::push(const Node& n) {
-  const int64_t k = key(n.pose);
+  const int64_t k = key(n.pose, n.reverse);
   const auto it = best_g_.find(k);
   if (it != best_g_.end() && it->second <= n.g + 1e-9) return;
   best_g_[k] = n.g;
@@ -118,18 +123,18 @@ void SearchAttempt::push(const Node& n) {
 }
 
 void SearchAttempt::seedStart() {
-  push({start_, 0.0, -1, 0.0, false});
+  push({start_, 0.0, -1, 0.0, false, false, false, 0, 0.0});
   for (const double dir : {1.0, -1.0}) {
     for (int k = 1; k <= params_.heading_bins / 2; ++k) {
       const Pose2D p{start_.x, start_.y, start_.yaw + dir * k * bin_angle_};
       FootprintContact c;
       if (!poseOk(p, true, c)) break;
-      push({p, params_.rotation_cost * k * bin_angle_, 0, 0.0, true});
+      push({p, params_.rotation_cost * k * bin_angle_, 0, 0.0, true, false, false, 0, 0.0});
     }
   }
 }
 
-std::vector<Pose2D> SearchAttempt::pathTo(int idx) const {
+std::vector<Pose2D> SearchAttempt::pathTo(int idx, bool with_goal) const {
   std::vector<int> chain;
   for (int i = idx; i >= 0; i = nodes_[i].parent) chain.push_back(i);
   std::reverse(chain.begin(), chain.end());
@@ -139,14 +144,15 @@ std::vector<Pose2D> SearchAttempt::pathTo(int idx) const {
     if (n.rotation) continue;
     const Pose2D& from = nodes_[n.parent].pose;
     const int sub = std::max(1, static_cast<int>(std::ceil(attempt_.step / 0.05)));
-    for (int k = 1; k <= sub; ++k) path.push_back(arcEnd(from, n.kappa, attempt_.step * k / sub));
+    const double d = n.reverse ? -attempt_.step : attempt_.step;
+    for (int k = 1; k <= sub; ++k) path.push_back(arcEnd(from, n.kappa, d * k / sub));
   }
   path.front().yaw = path.size() > 1 ? path[1].yaw : start_.yaw;
-  path.push_back(goal_);
+  if (with_goal) path.push_back(goal_);
   return path;
 }
 
-bool SearchAttempt::acceptCandidate(int idx, FootprintSearchResult& result) {
+bool SearchAttempt::acceptCandidate(int idx) {
   // Cheap first: the final rotation to the goal heading, every 5 degrees.
   bool rotation_ok = true;
   FootprintContact c;
@@ -161,54 +167,90 @@ bool SearchAttempt::acceptCandidate(int idx, FootprintSearchResult& result) {
     last_candidate_reason_ = os.str();
     return false;
   }
-  std::vector<Pose2D> path = pathTo(idx);
+  return acceptPath(pathTo(idx));
+}
+
+bool SearchAttempt::acceptPath(std::vector<Pose2D> path) {
   const SweepCheck check = checkSweep(checker_, sweep_.sweep(start_, path), rule_);
   if (!check.ok) {
     last_candidate_reason_ = check.reason;
     return false;
   }
-  result.path = std::move(path);
-  result.sweep = check;
+  result_.path = std::move(path);
+  result_.sweep = check;
+  return true;
+}
+
+bool SearchAttempt::tryAnalytic(int idx, const Node& node) {
+  const ReedsSheppShot shot = reedsSheppShot(node.pose, goal_, params_.analytic_radius, 0.05);
+  if (shot.poses.size() < 2) return false;
+  const bool cusp = node.moved && shot.first_reverse != node.reverse;
+  if (node.cusps + shot.cusps + (cusp ? 1 : 0) > params_.max_cusps) return false;
+  if (shot.reversed > 0.0 && !params_.reverse) return false;
+  if (node.reversed + shot.reversed > params_.max_reverse_length + 1e-9) return false;
+  // A stretch too short to drive between two stops (the controller needs some length to
+  // accelerate and brake): not worth a cusp.
+  if (shot.cusps > 0 && shot.shortest_run < 2.0 * attempt_.step) return false;
+  FootprintContact c;
+  for (size_t i = 1; i < shot.poses.size(); ++i)
+    if (!poseOk(shot.poses[i], false, c)) return false;
+  std::vector<Pose2D> path = pathTo(idx, false);
+  if (path.size() == 1) path.front().yaw = node.pose.yaw;
+  path.insert(path.end(), shot.poses.begin() + 1, shot.poses.end());
+  if (!acceptPath(std::move(path))) return false;
+  result_.cusps = node.cusps + shot.cusps + (cusp ? 1 : 0);
+  result_.reversed_length = node.reversed + shot.reversed;
   return true;
 }
 
 void SearchAttempt::expand(int idx, const Node& node) {
-  for (const double kappa : curvatures_) {
-    // Coarse here (5 cm / 5 degrees); a candidate's whole sweep is verified finely.
-    const int n = std::max(
-        {1, static_cast<int>(std::ceil(attempt_.step / 0.05)),
-         static_cast<int>(std::ceil(std::abs(kappa) * attempt_.step / (5.0 * M_PI / 180.0)))});
-    double cmin = kInf;
-    FootprintContact block{kInf, 0.0, 0.0};
-    for (int s = 1; s <= n; ++s) {
-      FootprintContact c;
-      if (!poseOk(arcEnd(node.pose, kappa, attempt_.step * s / n), false, c)) {
-        block = c;
-        break;
+  for (const bool reverse : {false, true}) {
+    if (reverse && !params_.reverse) continue;
+    // A change of direction (a cusp: the chair stops) and the reversed metres are limited.
+    const bool cusp = node.moved && reverse != node.reverse;
+    if (cusp && node.cusps >= params_.max_cusps) continue;
+    if (reverse && node.reversed + attempt_.step > params_.max_reverse_length + 1e-9) continue;
+    const double d = reverse ? -attempt_.step : attempt_.step;
+    for (const double kappa : curvatures_) {
+      // Coarse here (5 cm / 5 degrees); a candidate's whole sweep is verified finely.
+      const int n = std::max(
+          {1, static_cast<int>(std::ceil(attempt_.step / 0.05)),
+           static_cast<int>(std::ceil(std::abs(kappa) * attempt_.step / (5.0 * M_PI / 180.0)))});
+      double cmin = kInf;
+      FootprintContact block{kInf, 0.0, 0.0};
+      for (int s = 1; s <= n; ++s) {
+        FootprintContact c;
+        if (!poseOk(arcEnd(node.pose, kappa, d * s / n), false, c)) {
+          block = c;
+          break;
+        }
+        cmin = std::min(cmin, c.clearance);
       }
-      cmin = std::min(cmin, c.clearance);
-    }
-    const Pose2D end = arcEnd(node.pose, kappa, attempt_.step);
-    if (std::isfinite(block.clearance)) {
-      const double hb = heuristic(node.pose);
-      if (hb < closest_ || (hb == closest_ && block.clearance < closest_block_.clearance)) {
-        closest_ = hb;
-        closest_pose_ = node.pose;
-        closest_block_ = block;
+      const Pose2D end = arcEnd(node.pose, kappa, d);
+      if (std::isfinite(block.clearance)) {
+        const double hb = heuristic(node.pose);
+        if (hb < closest_ || (hb == closest_ && block.clearance < closest_block_.clearance)) {
+          closest_ = hb;
+          closest_pose_ = node.pose;
+          closest_block_ = block;
+        }
+        continue;
       }
-      continue;
+      // Forwards is preferred: a reversed metre costs reverse_cost times a forward one, and
+      // every cusp (stop, change of direction) cusp_cost metres.
+      const double cost = attempt_.step *
+                              (1.0 + penalty(cmin) + params_.turn_weight * std::abs(kappa)) *
+                              (reverse ? params_.reverse_cost : 1.0) +
+                          (cusp ? params_.cusp_cost : 0.0);
+      push({end, node.g + cost, idx, kappa, false, true, reverse, node.cusps + (cusp ? 1 : 0),
+            node.reversed + (reverse ? attempt_.step : 0.0)});
     }
-    const double cost =
-        attempt_.step * (1.0 + penalty(cmin) + params_.turn_weight * std::abs(kappa));
-    push({end, node.g + cost, idx, kappa, false});
   }
 }
 
-std::string SearchAttempt::failureReason(size_t expansions, double seconds,
-                                         const std::string& limit) const {
+std::string SearchAttempt::failureReason() const {
   std::ostringstream os;
   os.precision(3);
-  os << "no footprint-feasible path (" << expansions << " expansions, " << seconds << " s): ";
   if (!last_candidate_reason_.empty()) {
     os << "every arrival at the goal fails its sweep; last: " << last_candidate_reason_;
   } else if (std::isfinite(closest_block_.clearance)) {
@@ -219,51 +261,52 @@ std::string SearchAttempt::failureReason(size_t expansions, double seconds,
   } else {
     os << "no motion from the start keeps the minimum clearance";
   }
-  if (!limit.empty()) os << " [" << limit << "]";
   return os.str();
 }
 
-FootprintSearchResult SearchAttempt::run(double time_limit) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  };
-  FootprintSearchResult result;
-  const auto finish = [&](bool found) {
-    result.found = found;
-    result.time = elapsed();
-    if (!found) result.path.clear();
-    return result;
-  };
-  if (!prepare(result.reason)) return finish(false);
-  seedStart();
-  while (!open_.empty()) {
-    if ((result.expansions & 63) == 0 && elapsed() > time_limit) {
-      result.reason = "footprint search: time limit reached";
-      break;
-    }
-    if (result.expansions >= static_cast<size_t>(params_.attempt_expansions)) {
-      result.reason = "footprint search: expansion limit reached";
-      break;
-    }
+SearchAttempt::Status SearchAttempt::advance(size_t expansions,
+                                             std::chrono::steady_clock::time_point deadline) {
+  if (status_ != Status::kRunning) return status_;
+  if (!started_) {
+    started_ = true;
+    if (!prepare(result_.reason)) return status_ = Status::kRefused;
+    seedStart();
+  }
+  const size_t stop_at = expansions_ + expansions;
+  while (!open_.empty() && expansions_ < stop_at) {
+    if ((expansions_ & 63) == 0 && std::chrono::steady_clock::now() > deadline) return status_;
     const int idx = open_.top().second;
     open_.pop();
-    bool& done = expanded_[key(nodes_[idx].pose)];
+    bool& done = expanded_[key(nodes_[idx].pose, nodes_[idx].reverse)];
     if (done) continue;
     done = true;
-    ++result.expansions;
+    ++expansions_;
     const Node node = nodes_[idx];  // expand() may grow nodes_
-    if (joinsGoalAhead(node.pose, goal_, params_)) {
-      if (acceptCandidate(idx, result)) return finish(true);
-      if (++candidates_ >= params_.max_candidates) {
-        result.reason = "footprint search: no candidate's sweep is feasible";
-        break;
+    // Analytic expansion near the goal: each node that comes closer than any tried before, and
+    // every tenth expansion there.
+    const double to_goal = heuristic(node.pose) / attempt_.heuristic_weight;
+    if (to_goal <= params_.analytic_distance &&
+        (to_goal < analytic_best_ - 0.05 || expansions_ >= analytic_last_ + 10)) {
+      analytic_best_ = std::min(analytic_best_, to_goal);
+      analytic_last_ = expansions_;
+      if (tryAnalytic(idx, node)) {
+        result_.found = true;
+        return status_ = Status::kFound;
       }
+    }
+    if (joinsGoalAlongTheMotion(node.pose, node.reverse, goal_, params_)) {
+      if (acceptCandidate(idx)) {
+        result_.found = true;
+        result_.cusps = node.cusps;
+        result_.reversed_length = node.reversed;
+        return status_ = Status::kFound;
+      }
+      if (++candidates_ >= params_.max_candidates) return status_ = Status::kExhausted;
     }
     expand(idx, node);
   }
-  result.reason = failureReason(result.expansions, elapsed(), result.reason);
-  return finish(false);
+  if (open_.empty()) status_ = Status::kExhausted;
+  return status_;
 }
 
 }  // namespace wheelchair_planner

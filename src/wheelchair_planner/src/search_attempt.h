@@ -1,10 +1,13 @@
-// One weighted A* run of the footprint search with one setting (internal header of
-// footprint_search.cpp): the lattice, the start's in-place rotations, the motion primitives,
-// the candidates that join the goal, and the reason when nothing is found.
+// One weighted A* run of the footprint search with one lattice setting (internal header of
+// footprint_search.cpp): the lattice, the start's in-place rotations, the forward and reverse
+// motion primitives with their cusps, the candidates that join the goal, and the reason when
+// nothing is found. A run can be advanced in slices (footprint_search.cpp shares one budget
+// among the settings).
 #pragma once
 
 #include <wheelchair_planner/footprint_search.h>
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -23,8 +26,24 @@ class SearchAttempt {
                 const FootprintSearchParams& params, const FootprintSearchParams::Attempt& attempt,
                 const SweepModel& sweep);
 
-  /// Searches for at most `time_limit` seconds (and params.attempt_expansions expansions).
-  FootprintSearchResult run(double time_limit);
+  enum class Status {
+    kRunning,    ///< open nodes left: may be advanced further
+    kFound,      ///< `result()` holds the path
+    kExhausted,  ///< every pose the lattice reaches was expanded (or too many candidates failed)
+    kRefused,    ///< could not start (outside the map, goal unreachable, start overlapping)
+  };
+
+  /// Expands at most `expansions` more nodes, stopping early at `deadline` (steady clock).
+  Status advance(size_t expansions, std::chrono::steady_clock::time_point deadline);
+
+  Status status() const { return status_; }
+  size_t expansions() const { return expansions_; }
+  /// The found path (status kFound); otherwise `reason` says why nothing was found so far.
+  const FootprintSearchResult& result() const { return result_; }
+  /// Why nothing was found so far (closest approach, what blocked it, the last failed sweep).
+  std::string failureReason() const;
+  /// How close the run came to the goal [m of geodesic distance] (for the summary).
+  double closestApproach() const { return closest_ / attempt_.heuristic_weight; }
 
  private:
   struct Node {
@@ -33,6 +52,10 @@ class SearchAttempt {
     int parent = -1;
     double kappa = 0.0;
     bool rotation = false;  ///< reached from the parent by an in-place rotation (start only)
+    bool moved = false;     ///< reached by a primitive (not the start or a start rotation)
+    bool reverse = false;   ///< that primitive was driven in reverse
+    int cusps = 0;          ///< direction changes on the way here
+    double reversed = 0.0;  ///< [m] driven in reverse on the way here
   };
 
   /// The cells, the heuristic field and the clearance rule; false with the reason if the search
@@ -40,23 +63,29 @@ class SearchAttempt {
   bool prepare(std::string& reason);
   /// The start node and the headings reachable from it by rotating in place either way.
   void seedStart();
-  /// A goal-region arrival: true (and `result` filled) if the final rotation and the whole
+  /// A goal-region arrival: true (and `result_` filled) if the final rotation and the whole
   /// executed sweep of the path to it keep the required clearance.
-  bool acceptCandidate(int idx, FootprintSearchResult& result);
+  bool acceptCandidate(int idx);
   /// The motion primitives from node `idx` (a copy of it in `node`).
   void expand(int idx, const Node& node);
-  /// Why nothing was found, after `expansions` in `seconds`; `limit` names a limit reached.
-  std::string failureReason(size_t expansions, double seconds, const std::string& limit) const;
+  /// Analytic expansion: the Reeds-Shepp path from node `idx` to the goal pose; true (and
+  /// `result_` filled) if it keeps the clearance, the limits on cusps and reversing, and the
+  /// whole executed sweep passes.
+  bool tryAnalytic(int idx, const Node& node);
+  /// True (and `result_` filled) if the executed sweep of `path` keeps the clearance; else its
+  /// reason is kept for the failure message.
+  bool acceptPath(std::vector<Pose2D> path);
 
   /// Clearance of a pose if it keeps what the rule requires there, else the blocking contact.
   bool poseOk(const Pose2D& p, bool start_rotation, FootprintContact& c) const;
   double heuristic(const Pose2D& p) const;
-  int64_t key(const Pose2D& p) const;
+  int64_t key(const Pose2D& p, bool reverse) const;
   /// Cost per metre for a primitive whose smallest footprint clearance is `c`.
   double penalty(double c) const;
   void push(const Node& n);
-  /// The start position, the primitives' poses (every 5 cm) up to node `idx`, and the goal.
-  std::vector<Pose2D> pathTo(int idx) const;
+  /// The start position, the primitives' poses (every 5 cm) up to node `idx`, and the goal
+  /// (unless `with_goal` is false).
+  std::vector<Pose2D> pathTo(int idx, bool with_goal = true) const;
 
   const FootprintChecker& checker_;
   const ConfigSpace& cs_;
@@ -69,6 +98,10 @@ class SearchAttempt {
   double bin_angle_ = 0.0;
   std::vector<double> curvatures_;
 
+  Status status_ = Status::kRunning;
+  bool started_ = false;
+  size_t expansions_ = 0;
+  FootprintSearchResult result_;
   std::vector<Node> nodes_;
   std::unordered_map<int64_t, double> best_g_;
   std::unordered_map<int64_t, bool> expanded_;
@@ -80,6 +113,8 @@ class SearchAttempt {
   Pose2D closest_pose_;
   FootprintContact closest_block_;
   int candidates_ = 0;
+  double analytic_best_ = std::numeric_limits<double>::infinity();  ///< nearest node tried [m]
+  size_t analytic_last_ = 0;  ///< expansion count at the last analytic try
   std::string last_candidate_reason_;
 };
 

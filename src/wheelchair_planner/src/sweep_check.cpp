@@ -1,5 +1,6 @@
 #include <wheelchair_planner/sweep_check.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -13,6 +14,8 @@ const char* phaseName(SweepPose::Phase phase) {
       return "rotating in place at the start";
     case SweepPose::Phase::kGoalRotation:
       return "rotating in place to the goal heading";
+    case SweepPose::Phase::kCuspRotation:
+      return "turning in place where it changes direction";
     default:
       return "following the path";
   }
@@ -44,10 +47,14 @@ SweepCheck checkSweep(const FootprintChecker& checker, const std::vector<SweepPo
   FootprintContact violation;
   Pose2D violation_pose;
   SweepPose::Phase violation_phase = SweepPose::Phase::kPath;
+  bool violation_reverse = false;
   // Far from obstacles only a lower bound is computed (the enclosing disc is clear).
   const double enough = rule.min_clearance + 0.25;
   for (const SweepPose& sp : sweep) {
     const FootprintContact c = checker.clearance(sp.pose, -1e9, enough);
+    if (sp.piece >= static_cast<int>(result.piece_clearance.size()))
+      result.piece_clearance.resize(sp.piece + 1, 1e9);
+    result.piece_clearance[sp.piece] = std::min(result.piece_clearance[sp.piece], c.clearance);
     if (c.clearance < result.min_clearance) {
       result.min_clearance = c.clearance;
       result.contact = c;
@@ -61,6 +68,7 @@ SweepCheck checkSweep(const FootprintChecker& checker, const std::vector<SweepPo
       violation = c;
       violation_pose = sp.pose;
       violation_phase = sp.phase;
+      violation_reverse = sp.direction == wheelchair_core::Direction::kReverse;
     }
   }
   result.poses = sweep.size();
@@ -74,6 +82,7 @@ SweepCheck checkSweep(const FootprintChecker& checker, const std::vector<SweepPo
     os << "the chair's body would "
        << (violation.clearance <= 0.0 ? "hit an obstacle" : "come too close to an obstacle")
        << " at (" << violation.x << ", " << violation.y << ") while " << phaseName(violation_phase)
+       << (violation_reverse && violation_phase == SweepPose::Phase::kPath ? " in reverse" : "")
        << " with base_link at (" << violation_pose.x << ", " << violation_pose.y << ", yaw "
        << violation_pose.yaw << "): footprint clearance " << violation.clearance << " m, minimum "
        << worst_required << " m";

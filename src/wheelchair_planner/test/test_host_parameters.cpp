@@ -69,6 +69,9 @@ TEST(HostParameters, TheChairFilesFootprintAndEveryKeyReachTheirFields) {
                         " min_clearance: 0.06, clearance_band: 0.25, band_conductance: 0.1,"
                         " unknown_is_obstacle: false, footprint_repair: false,"
                         " footprint_search_time: 10.0, footprint_goal_tolerance: 0.2,"
+                        " footprint_search_expansions: 5000, footprint_reverse: false,"
+                        " footprint_max_cusps: 2, footprint_max_reverse_length: 4.0,"
+                        " footprint_reverse_cost: 3.0, footprint_cusp_cost: 1.5,"
                         " fake_speed: 2.5}");
   EXPECT_EQ(l.created, "fake/Planner");
   EXPECT_EQ(l.setup.host.map_frame, "world");
@@ -85,6 +88,12 @@ TEST(HostParameters, TheChairFilesFootprintAndEveryKeyReachTheirFields) {
   EXPECT_FALSE(s.gate.repair);
   EXPECT_DOUBLE_EQ(s.gate.search.time_limit, 10.0);
   EXPECT_DOUBLE_EQ(s.gate.search.goal_tolerance, 0.2);
+  EXPECT_EQ(s.gate.search.max_expansions, 5000);
+  EXPECT_FALSE(s.gate.search.reverse);
+  EXPECT_EQ(s.gate.search.max_cusps, 2);
+  EXPECT_DOUBLE_EQ(s.gate.search.max_reverse_length, 4.0);
+  EXPECT_DOUBLE_EQ(s.gate.search.reverse_cost, 3.0);
+  EXPECT_DOUBLE_EQ(s.gate.search.cusp_cost, 1.5);
   EXPECT_DOUBLE_EQ(l.planner->speed_, 2.5) << "the plugin read its own key";
 }
 
@@ -107,6 +116,9 @@ TEST(HostParameters, RefusesAKeyNobodyReadsOldNamesAndInvalidValues) {
   EXPECT_NE(old_plugin.find("now called 'wheelchair_ompl_planner/OmplPlanner'"), std::string::npos)
       << old_plugin;
   EXPECT_NE(refusal("{chair_file: /nonexistent/chair.yaml}").find("chair_file"), std::string::npos);
+  EXPECT_NE(refusal("{chair_file: " + kChairFile + ", footprint_reverse_cost: 0.5}")
+                .find("footprint_reverse_cost must be >= 1"),
+            std::string::npos);
   EXPECT_NE(refusal("{chair_file: " + kChairFile + ", footprint_search_time: 0}")
                 .find("footprint_search_time must be positive"),
             std::string::npos);

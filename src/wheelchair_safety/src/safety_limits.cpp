@@ -13,6 +13,9 @@ std::string SafetyLimits::validate() const {
       .positive("corridor_half_width", corridor_half_width)
       .nonNegative("map_tolerance", map_tolerance)
       .nonNegative("driver_fault_grace", driver_fault_grace)
+      .positive("rear_scan_timeout", rear_scan_timeout)
+      .positive("rear_stop_distance", rear_stop_distance)
+      .nonNegative("rear_overhang", rear_overhang)
       .check(min_obstacle_returns >= 1, "min_obstacle_returns must be at least 1 (got " +
                                             std::to_string(min_obstacle_returns) + ")");
   return checks.result();
@@ -29,6 +32,9 @@ void readSafetyLimits(wheelchair_core::ConfigReader& reader, SafetyLimits& limit
   reader.read("map_tolerance", limits.map_tolerance);
   reader.read("min_obstacle_returns", limits.min_obstacle_returns);
   reader.read("driver_fault_grace", limits.driver_fault_grace);
+  reader.read("rear_scan_timeout", limits.rear_scan_timeout);
+  reader.read("rear_stop_distance", limits.rear_stop_distance);
+  reader.read("rear_overhang", limits.rear_overhang);
 }
 
 }  // namespace wheelchair_safety

@@ -107,6 +107,7 @@ class SafetyNodelet : public nodelet::Nodelet {
     subs_.push_back(nh.subscribe("map", 1, &SafetyNodelet::onMap, this));
     subs_.push_back(nh.subscribe("plan", 1, &SafetyNodelet::onPlan, this));
     subs_.push_back(nh.subscribe("scan", 5, &SafetyNodelet::onScan, this));
+    subs_.push_back(nh.subscribe("rear_scan", 5, &SafetyNodelet::onRearScan, this));
     subs_.push_back(nh.subscribe("kld_pose", 5, &SafetyNodelet::onEstimate, this));
     subs_.push_back(nh.subscribe("localization/status", 5, &SafetyNodelet::onLocalization, this));
     subs_.push_back(nh.subscribe("odom", 5, &SafetyNodelet::onOdometry, this));
@@ -129,10 +130,15 @@ class SafetyNodelet : public nodelet::Nodelet {
     supervisor_->onMap(map);
   }
 
+  /// A new plan is checked at once (not at the next tick): a plan that backs up with the rear
+  /// laser silent is stopped before the controller has moved the chair.
   void onPlan(const nav_msgs::Path::ConstPtr& msg) {
     const auto path = wheelchair_ros::fromPathMsg(*msg);
-    std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onPath(path);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      supervisor_->onPath(path);
+    }
+    update();
   }
 
   void onEstimate(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
@@ -176,6 +182,33 @@ class SafetyNodelet : public nodelet::Nodelet {
   void onOdometry(const nav_msgs::Odometry::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     supervisor_->onSpeed(msg->header.stamp.toSec(), msg->twist.twist.linear.x);
+  }
+
+  /// The rear laser (it guards reverse motion): its returns in the map frame.
+  void onRearScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
+    std::vector<Eigen::Vector2d> returns;
+    if (!returnsInMap(*msg, returns)) return;  // the rear watchdog then runs out
+    std::lock_guard<std::mutex> lock(mutex_);
+    supervisor_->onRearScan(msg->header.stamp.toSec(), returns);
+  }
+
+  /// A scan's returns in the map frame (tf at the scan's stamp); false if tf has no transform.
+  bool returnsInMap(const sensor_msgs::LaserScan& msg, std::vector<Eigen::Vector2d>& returns) {
+    geometry_msgs::TransformStamped sensor_in_map;
+    try {
+      sensor_in_map = tf_buffer_->lookupTransform(map_frame_, msg.header.frame_id, msg.header.stamp,
+                                                  ros::Duration(0.05));
+    } catch (const tf2::TransformException& e) {
+      NODELET_WARN_THROTTLE(2.0, "%s scan skipped: no %s -> %s: %s", msg.header.frame_id.c_str(),
+                            map_frame_.c_str(), msg.header.frame_id.c_str(), e.what());
+      return false;
+    }
+    wheelchair_core::LaserScan2D scan = wheelchair_ros::fromLaserScanMsg(msg);
+    wheelchair_core::Pose2D sensor_pose;
+    if (wheelchair_ros::laserPose2D(sensor_in_map.transform, sensor_pose))
+      wheelchair_core::mirrorScanAngles(scan);  // mounted upside down
+    returns = wheelchair_core::scanEndpoints(scan, sensor_pose);
+    return true;
   }
 
   void onUserStop(const std_msgs::Empty::ConstPtr&) {

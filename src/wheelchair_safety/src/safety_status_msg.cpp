@@ -24,6 +24,10 @@ uint8_t statusReason(StopReason reason) {
       return SafetyStatus::DRIVER_FAULT;
     case StopReason::kUserStop:
       return SafetyStatus::USER_STOP;
+    case StopReason::kRearSensorSilent:
+      return SafetyStatus::REAR_SENSOR_SILENT;
+    case StopReason::kObstacleBehind:
+      return SafetyStatus::OBSTACLE_BEHIND;
   }
   return SafetyStatus::NO_DATA;  // unreachable; never "safe" for an unknown reason
 }

@@ -43,18 +43,23 @@ const char* describe(StopReason reason) {
       return "the motor controller reports a fault";
     case StopReason::kUserStop:
       return "stopped by the rider";
+    case StopReason::kRearSensorSilent:
+      return "the sensor behind the chair is silent";
+    case StopReason::kObstacleBehind:
+      return "something is behind the chair";
   }
   return "unknown";
 }
 
 SafetySupervisor::SafetySupervisor(SafetyLimits limits, ProtectiveField field)
-    : limits_(limits), field_(field) {}
+    : limits_(limits), field_(field), rear_(limits) {}
 
 void SafetySupervisor::onMap(const wheelchair_core::OccupancyMap& map) { map_ = map; }
 
 void SafetySupervisor::onPath(const std::vector<wheelchair_core::Pose2D>& path) {
   path_.clear();
   for (const auto& pose : path) path_.push_back(pose.position());
+  rear_.onPath(path);
 }
 
 void SafetySupervisor::onLocalization(double stamp, bool localized,
@@ -137,6 +142,12 @@ SpeedLimit SafetySupervisor::speedLimit() const {
   return obstacle_limit_.speed <= view_limit_.speed ? obstacle_limit_ : view_limit_;
 }
 
+void SafetySupervisor::onRearScan(double stamp,
+                                  const std::vector<Eigen::Vector2d>& returns_in_map) {
+  rear_.onScan(stamp, returns_in_map, pose_,
+               [this](const Eigen::Vector2d& p) { return knownObstacleNear(p); });
+}
+
 void SafetySupervisor::onDriverStatus(double stamp, bool fault, const std::string& detail) {
   if (fault && !driver_fault_) driver_fault_since_ = stamp;
   driver_fault_ = fault;
@@ -196,6 +207,8 @@ SafetyVerdict SafetySupervisor::evaluate(double now) const {
     return stopFor(StopReason::kCovarianceTooLarge, text, position ? xy_std : heading_std,
                    position ? limits_.max_position_std : limits_.max_heading_std);
   }
+  const SafetyVerdict behind = rear_.evaluate(now, pose_);
+  if (behind.stop) return behind;
   if (unexpected_returns_ >= limits_.min_obstacle_returns) {
     char text[160];
     std::snprintf(text, sizeof(text),

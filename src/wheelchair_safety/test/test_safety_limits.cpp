@@ -34,7 +34,8 @@ TEST(SafetyLimits, EveryKeyIsRead) {
   const SafetyLimits l = fromYaml(
       "{scan_timeout: 1.5, pose_timeout: 1.4, localization_timeout: 3, max_position_std: 0.3, "
       "max_heading_std: 0.25, stop_distance: 2.0, corridor_half_width: 0.5, map_tolerance: 0.1, "
-      "min_obstacle_returns: 5, driver_fault_grace: 0.5}");
+      "min_obstacle_returns: 5, driver_fault_grace: 0.5, rear_scan_timeout: 0.4, "
+      "rear_stop_distance: 0.7, rear_overhang: 0.9}");
   EXPECT_DOUBLE_EQ(l.scan_timeout, 1.5);
   EXPECT_DOUBLE_EQ(l.pose_timeout, 1.4);
   EXPECT_DOUBLE_EQ(l.localization_timeout, 3.0);
@@ -45,6 +46,9 @@ TEST(SafetyLimits, EveryKeyIsRead) {
   EXPECT_DOUBLE_EQ(l.map_tolerance, 0.1);
   EXPECT_EQ(l.min_obstacle_returns, 5);
   EXPECT_DOUBLE_EQ(l.driver_fault_grace, 0.5);
+  EXPECT_DOUBLE_EQ(l.rear_scan_timeout, 0.4);
+  EXPECT_DOUBLE_EQ(l.rear_stop_distance, 0.7);
+  EXPECT_DOUBLE_EQ(l.rear_overhang, 0.9);
 }
 
 TEST(SafetyLimits, AMisspeltKeyIsRefusedWithTheKnownKeys) {

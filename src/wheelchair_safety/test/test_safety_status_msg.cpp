@@ -18,7 +18,9 @@ TEST(SafetyStatusMsg, EveryReasonHasItsOwnConstant) {
                             StopReason::kPoseStale,
                             StopReason::kUnexpectedObstacle,
                             StopReason::kDriverFault,
-                            StopReason::kUserStop};
+                            StopReason::kUserStop,
+                            StopReason::kRearSensorSilent,
+                            StopReason::kObstacleBehind};
   std::set<uint8_t> seen;
   for (StopReason r : all) EXPECT_TRUE(seen.insert(statusReason(r)).second);
   EXPECT_EQ(statusReason(StopReason::kNone), SafetyStatus::NONE);

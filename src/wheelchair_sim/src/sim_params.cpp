@@ -21,6 +21,12 @@ std::string SimParams::validate() const {
       .positive("laser_range_max", laser_range_max)
       .check(laser_range_max > laser_range_min, "laser_range_max must exceed laser_range_min")
       .nonNegative("laser_range_noise", laser_range_noise)
+      .check(rear_laser_beams >= 2,
+             "rear_laser_beams must be >= 2 (got " + std::to_string(rear_laser_beams) + ")")
+      .positive("rear_laser_fov", rear_laser_fov)
+      .check(rear_laser_fov <= 2.0 * M_PI, "rear_laser_fov must be at most 2 pi")
+      .check(rear_laser_range_max > laser_range_min,
+             "rear_laser_range_max must exceed laser_range_min")
       .positive("odom_rate", odom_rate)
       .nonNegative("odom_noise", odom_noise);
   const std::pair<double, const char*> relative_errors[] = {
@@ -47,12 +53,26 @@ void readSimParams(wheelchair_core::ConfigReader& r, SimParams& p) {
   r.read("laser_range_min", p.laser_range_min);
   r.read("laser_range_max", p.laser_range_max);
   r.read("laser_range_noise", p.laser_range_noise);
+  r.read("rear_laser_enabled", p.rear_laser_enabled);
+  r.read("rear_laser_beams", p.rear_laser_beams);
+  r.read("rear_laser_fov", p.rear_laser_fov);
+  r.read("rear_laser_range_max", p.rear_laser_range_max);
   r.read("odom_rate", p.odom_rate);
   r.read("odom_radius_error_right", p.odom_radius_error_right);
   r.read("odom_radius_error_left", p.odom_radius_error_left);
   r.read("odom_track_error", p.odom_track_error);
   r.read("odom_noise", p.odom_noise);
   r.read("seed", p.seed);
+}
+
+SimParams rearLaserParams(const SimParams& params) {
+  SimParams rear = params;
+  rear.laser_enabled = params.rear_laser_enabled;
+  rear.laser_beams = params.rear_laser_beams;
+  rear.laser_fov = params.rear_laser_fov;
+  rear.laser_range_max = params.rear_laser_range_max;
+  rear.seed = params.seed + 101;  // its own noise
+  return rear;
 }
 
 SimParams loadSimParams(const std::string& yaml_path) {

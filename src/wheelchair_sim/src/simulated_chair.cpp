@@ -20,6 +20,12 @@ SimulatedChair::SimulatedChair(const wheelchair_description::ChairParams& chair,
     laser_.emplace(params, wheelchair_core::Pose2D{chair.laser_x, chair.laser_y, chair.laser_yaw},
                    world);
   }
+  if (world && params.rear_laser_enabled) {
+    rear_laser_.emplace(
+        rearLaserParams(params),
+        wheelchair_core::Pose2D{chair.rear_laser_x, chair.rear_laser_y, chair.rear_laser_yaw},
+        world);
+  }
   odometry_.reset(wheelchair_core::Pose2D(), sim_.readWheels().angle);
 }
 
@@ -30,9 +36,16 @@ SensorOutputs SimulatedChair::advance(double dt) {
   SensorOutputs out;
   out.collision_started = sim_.collided() && !was_collided;
   out.odometry_due = odom_schedule_.due(sim_.time());
-  if (laser_ && scan_schedule_.due(sim_.time())) {
-    out.scan = laser_->scan(sim_.pose(), sim_.obstacles().presentAt(sim_.time()));
-    out.scan->stamp = sim_.time();
+  if ((laser_ || rear_laser_) && scan_schedule_.due(sim_.time())) {
+    const std::vector<Disc> discs = sim_.obstacles().presentAt(sim_.time());
+    if (laser_) {
+      out.scan = laser_->scan(sim_.pose(), discs);
+      out.scan->stamp = sim_.time();
+    }
+    if (rear_laser_) {
+      out.rear_scan = rear_laser_->scan(sim_.pose(), discs);
+      out.rear_scan->stamp = sim_.time();
+    }
   }
   return out;
 }

@@ -80,6 +80,8 @@ class SimulatorNodelet : public nodelet::Nodelet {
 
     clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("clock", 10);
     scan_pub_ = nh.advertise<sensor_msgs::LaserScan>("scan", 5);
+    if (chair_sim_->hasRearLaser())
+      rear_scan_pub_ = nh.advertise<sensor_msgs::LaserScan>("rear_scan", 5);
     if (motor_controller_) settings_.publish_odometry = false;  // the driver's, from our encoders
     if (settings_.publish_odometry) odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
     truth_pub_ = nh.advertise<nav_msgs::Odometry>("sim/ground_truth", 10);
@@ -97,12 +99,17 @@ class SimulatorNodelet : public nodelet::Nodelet {
     laser_srv_ = nh.advertiseService("sim/enable_laser", &SimulatorNodelet::onEnableLaser, this);
     if (motor_controller_)
       fault_srv_ = nh.advertiseService("sim/motor_fault", &SimulatorNodelet::onMotorFault, this);
+    rear_laser_srv_ =
+        nh.advertiseService("sim/enable_rear_laser", &SimulatorNodelet::onEnableRearLaser, this);
     tf_ = std::make_unique<tf2_ros::TransformBroadcaster>();
     if (settings_.publish_laser_tf) {
       static_tf_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
       static_tf_->sendTransform(
           transformMessage(ros::Time(0), settings_.base_frame, settings_.laser_frame,
                            {chair_.laser_x, chair_.laser_y, chair_.laser_yaw}, chair_.laser_z));
+      static_tf_->sendTransform(transformMessage(
+          ros::Time(0), settings_.base_frame, settings_.rear_laser_frame,
+          {chair_.rear_laser_x, chair_.rear_laser_y, chair_.rear_laser_yaw}, chair_.rear_laser_z));
     }
     publishCollision(false);
     NODELET_INFO("simulator: world %s, speed %.1f (0 = as fast as possible), step %.3f s",
@@ -199,6 +206,15 @@ class SimulatorNodelet : public nodelet::Nodelet {
       res.success = false;
     }
     res.message = res.success ? "motor fault: " + req.fault : "unknown fault '" + req.fault + "'";
+    NODELET_WARN("%s", res.message.c_str());
+    return true;
+  }
+
+  /// Rear laser dropout on demand (false: no /rear_scan at all until enabled again).
+  bool onEnableRearLaser(EnableLaser::Request& req, EnableLaser::Response& res) {
+    rear_laser_on_ = req.enable;
+    res.success = true;
+    res.message = req.enable ? "rear laser on" : "rear laser silent";
     NODELET_WARN("%s", res.message.c_str());
     return true;
   }
@@ -313,6 +329,9 @@ class SimulatorNodelet : public nodelet::Nodelet {
     }
     if (out.scan && laser_on_)
       scan_pub_.publish(scanMessage(*out.scan, settings_.laser_frame, settings_.sim.laser_rate));
+    if (out.rear_scan && rear_laser_on_)
+      rear_scan_pub_.publish(
+          scanMessage(*out.rear_scan, settings_.rear_laser_frame, settings_.sim.laser_rate));
     if (!out.odometry_due) return;
     const std::string& base = settings_.base_frame;
     truth_pub_.publish(odometryMessage(now, settings_.map_frame, base, sim.pose(), sim.velocity()));
@@ -333,13 +352,14 @@ class SimulatorNodelet : public nodelet::Nodelet {
   bool torques_stale_ = true;
   std::mutex mutex_;
   std::atomic<bool> running_{false};
-  std::atomic<bool> laser_on_{true};
+  std::atomic<bool> laser_on_{true}, rear_laser_on_{true};
   std::thread loop_;
-  ros::Publisher clock_pub_, scan_pub_, odom_pub_, truth_pub_, collision_pub_, trajectory_pub_;
+  ros::Publisher clock_pub_, scan_pub_, rear_scan_pub_, odom_pub_, truth_pub_, collision_pub_,
+      trajectory_pub_;
   nav_msgs::Path trajectory_;
   ros::Subscriber torque_sub_;
   ros::ServiceServer teleport_srv_, reset_srv_, add_obstacle_srv_, clear_obstacles_srv_, laser_srv_,
-      fault_srv_;
+      fault_srv_, rear_laser_srv_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_tf_;
 };

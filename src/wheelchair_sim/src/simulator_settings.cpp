@@ -19,9 +19,9 @@ std::string SimulatorSettings::validate() const {
       .check(port(udp_local_port) && port(udp_remote_port), "UDP ports must be in 0..65535")
       .check(!fake_bus.empty(), "fake_bus must not be empty")
       .check(motor_problem.empty(), "motor controller: " + motor_problem)
-      .check(
-          !map_frame.empty() && !odom_frame.empty() && !base_frame.empty() && !laser_frame.empty(),
-          "frames must not be empty")
+      .check(!map_frame.empty() && !odom_frame.empty() && !base_frame.empty() &&
+                 !laser_frame.empty() && !rear_laser_frame.empty(),
+             "frames must not be empty")
       .result();
 }
 
@@ -48,6 +48,7 @@ void readSimulatorSettings(wheelchair_core::ConfigReader& reader, SimulatorSetti
   reader.read("odom_frame", s.odom_frame);
   reader.read("base_frame", s.base_frame);
   reader.read("laser_frame", s.laser_frame);
+  reader.read("rear_laser_frame", s.rear_laser_frame);
   reader.allow("obstacles");
 }
 

@@ -1,5 +1,6 @@
-// The simulated laser against the analytic distance to a known wall.
+// The simulated lasers (front and rear) against the analytic distance to a known wall.
 #include <wheelchair_sim/laser_simulator.h>
+#include <wheelchair_sim/simulated_chair.h>
 
 #include "test_worlds.h"
 
@@ -78,6 +79,37 @@ TEST(Laser, RangeNoiseHasTheConfiguredSpread) {
   const double mean = sum / n, stddev = std::sqrt(sum2 / n - mean * mean);
   EXPECT_NEAR(mean, 0.0, 4 * noisy.laser_range_noise / std::sqrt(n));
   EXPECT_NEAR(stddev, noisy.laser_range_noise, 0.1 * noisy.laser_range_noise);
+}
+
+// The rear laser looks behind the chair from its mount 0.75 m behind the axle: with the chair
+// facing away from the wall (yaw pi) it sees the wall, its centre beam at the analytic distance,
+// while the front laser sees nothing within the world's far side.
+TEST(Laser, TheRearLaserSeesTheWallBehindTheChair) {
+  const auto chair = test::chair();
+  SimParams params;
+  params.laser_range_noise = 0.0;
+  SimulatedChair sim(chair, params, test::wallWorld(3.0, -5.0, 10.0));
+  ASSERT_TRUE(sim.hasRearLaser());
+  ASSERT_TRUE(sim.teleport({1.0, 0.0, M_PI}));
+  std::optional<wheelchair_core::LaserScan2D> rear, front;
+  for (int i = 0; i < 200 && !rear; ++i) {
+    SensorOutputs out = sim.advance(0.005);
+    rear = out.rear_scan;
+    front = out.scan;
+  }
+  ASSERT_TRUE(rear && front);
+  ASSERT_EQ(rear->ranges.size(), 361u);
+  EXPECT_DOUBLE_EQ(rear->range_max, params.rear_laser_range_max);
+  // Centre beam: the laser at x = 1 - 0.75 cos(pi) = 1.75 looks along +x to the face at 3.
+  const double centre = rear->ranges[180];
+  EXPECT_NEAR(centre, 3.0 - (1.0 - chair.rear_laser_x), kRes) << "rear centre beam";
+  // The front laser looks along -x: its centre beam hits the world's edge, far away.
+  EXPECT_GT(front->ranges[180], 5.0);
+  // Off: no rear scans at all.
+  SimParams no_rear = params;
+  no_rear.rear_laser_enabled = false;
+  SimulatedChair without(chair, no_rear, test::wallWorld(3.0));
+  EXPECT_FALSE(without.hasRearLaser());
 }
 
 TEST(Laser, SameSeedSameScan) {

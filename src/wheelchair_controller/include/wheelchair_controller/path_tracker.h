@@ -1,7 +1,10 @@
 // The controller: path in, wheel torques out. Phases: optional in-place alignment to the path,
-// path tracking of P_l (off-tracking compensated), in-place rotation to the goal heading, brake.
-// Every fault (non-finite or stale input, pose jump, empty or zero-length path, tracking error
-// too large) ends in the same ControlledStop.
+// then per piece of the path (split at its cusps, driven_motion.h) tracking of an output point
+// on the side the chair moves towards (P_l = P + L h forwards, P_r = P - L_r h in reverse,
+// off-tracking compensated), a stop at each cusp (and an in-place rotation there if the headings
+// differ), in-place rotation to the goal heading, brake. Every fault (non-finite or stale input,
+// pose jump, empty or zero-length path, tracking error too large) ends in the same
+// ControlledStop.
 #pragma once
 
 #include <wheelchair_controller/controlled_stop.h>
@@ -25,6 +28,7 @@ enum class TrackerState {
   kIdle,
   kAligning,
   kTracking,
+  kReversing,  ///< tracking a piece of the path driven in reverse
   kRotatingToGoal,
   kStopping,
   kGoalReached,
@@ -47,25 +51,37 @@ struct TrackerOutput {
   TrackerState state = TrackerState::kIdle;
   std::string reason;                           ///< why the last stop began (empty otherwise)
   bool has_reference = false;                   ///< y, reference, body_deviation valid
-  Eigen::Vector2d y = Eigen::Vector2d::Zero();  ///< P_l (estimated)
+  Eigen::Vector2d y = Eigen::Vector2d::Zero();  ///< the output point (estimated)
+  /// Signed offset ell of the output point ahead of the axle: L (P_l) forwards and in
+  /// rotations, -L_r (P_r, behind the axle) in reverse.
+  double output_offset = 0.0;
   OutputReference reference;
   double body_deviation = 0.0;  ///< distance of the axle centre P from the planned path [m]
   double saturation_scale = 1.0;
   double reference_rate = 1.0;  ///< governor's time rate (1: on schedule)
 };
 
-/// A path made ready for tracking: the smoothed path and its time-parametrized reference.
-/// Building it is the expensive part (up to ~1 s of CPU on a long curvy path), so the nodelet
-/// does it off the control thread and swaps the result in (PathTracker::setPreparedPath).
+/// A path made ready for tracking: its pieces smoothed (driven_motion.h) and a time-parametrized
+/// reference per piece. Building it is the expensive part (up to ~1 s of CPU on a long curvy
+/// path), so the nodelet does it off the control thread and swaps the result in
+/// (PathTracker::setPreparedPath).
 struct PreparedPath {
   std::string rejection;  ///< non-empty: the path is refused, and why
-  std::shared_ptr<const SmoothPath> path;
-  std::shared_ptr<const OutputTrajectory> trajectory;
-  double initial_speed = 0.0;  ///< [m/s] forward speed the reference starts with
+  std::shared_ptr<const DrivenPlan> plan;
+  std::vector<std::shared_ptr<const OutputTrajectory>> trajectories;  ///< one per piece
+  double initial_speed = 0.0;  ///< [m/s] signed body speed when the path was requested
 };
-/// Smooths the path and builds its reference for a chair moving at initial_speed (m/s).
+/// Smooths the path's pieces and builds their references; the first piece's starts at the
+/// chair's speed `initial_speed` (m/s, signed: negative backwards) if the chair moves its way,
+/// else at rest (the tracker then brakes first).
 PreparedPath preparePath(const std::vector<Pose2D>& path, const ChairParams& chair,
                          const TrackerConfig& config, double initial_speed);
+/// The reference of one piece: forwards the paper's P_l (L ahead, comfort limits of the
+/// config), in reverse P_r (reverse_lookahead behind the axle, speed at most reverse_max_speed).
+std::shared_ptr<const OutputTrajectory> pieceTrajectory(const DrivenPiece& piece,
+                                                        const ChairParams& chair,
+                                                        const TrackerConfig& config,
+                                                        double initial_speed);
 
 class PathTracker {
  public:
@@ -76,7 +92,8 @@ class PathTracker {
   std::string setPath(const std::vector<Pose2D>& path);
   /// As setPath with a path prepared elsewhere (preparePath). Refused while a hold is active.
   std::string setPreparedPath(const PreparedPath& prepared);
-  /// Forward speed [m/s] a path given now should start with (0 when not moving along a path).
+  /// Body speed [m/s] (signed: negative backwards) a path given now should start with (0 when
+  /// not moving along a path).
   double startSpeed() const;
   /// Stops (controlled) with the given reason.
   void abort(const std::string& reason);
@@ -115,8 +132,14 @@ class PathTracker {
   void startFromHere(const State& x);
   /// Advances the reference time (governor: anti-windup) and returns the reference.
   OutputReference governedReference(double dt, double error);
-  /// At the end of a phase: next phase, goal reached, or goal timeout. False: stop began.
+  /// The current phase's reference at the reference time, scaled by the governor's rate.
+  OutputReference scaledReference() const;
+  /// At the end of a phase: next phase (after coming to rest at a cusp), goal reached, or goal
+  /// timeout. False: stop began.
   bool advancePhase(double dt, const State& x, double error);
+  /// A new path whose first piece goes against the chair's motion: brake to rest first. True
+  /// while braking (`out` filled).
+  bool brakeForDirection(double now, double dt, const State& x, TrackerOutput& out);
   Eigen::Vector2d trackingTorque(const State& x, const OutputReference& ref) const;
   void beginStop(const std::string& reason, const Eigen::Vector2d& eta, TrackerState end_state);
   TrackerOutput stopStep(double dt, const Eigen::Vector2d& eta);
@@ -128,14 +151,17 @@ class PathTracker {
   TrackerState state_ = TrackerState::kIdle, stop_end_state_ = TrackerState::kAborted;
   std::string reason_;
 
-  std::shared_ptr<const SmoothPath> path_;
-  std::shared_ptr<const OutputTrajectory> path_trajectory_;
+  std::shared_ptr<const DrivenPlan> plan_;
+  std::vector<std::shared_ptr<const OutputTrajectory>> piece_trajectories_;
   bool path_pending_ = false;
+  bool braking_for_direction_ = false;
   std::map<std::string, std::string> holds_;  ///< source -> reason
   uint64_t stop_count_ = 0;
   struct Phase {
     std::shared_ptr<const OutputTrajectory> trajectory;
     TrackerState state;
+    double ell;             ///< signed offset of the output point ahead of the axle
+    bool rest_before_next;  ///< a cusp follows: come to rest before the next phase
   };
   std::vector<Phase> phases_;  ///< remaining phases, current first
   double goal_heading_ = 0.0;

@@ -25,13 +25,22 @@ struct PathPoint {
 /// Why a path is refused (empty string: accepted).
 std::string pathRejectionReason(const std::vector<Pose2D>& poses, double min_length);
 
+/// Which ends of a piece are cusps (the chair stops there and the next piece goes on the other
+/// way): such an end is smoothed with an odd extension (see SmoothPath).
+struct CuspEnds {
+  bool start = false;
+  bool end = false;
+};
+
 class SmoothPath {
  public:
   /// Resamples the polyline every `spacing` metres and smooths it with a moving average over
-  /// +-smoothing_half_window metres (ends kept). Throws std::invalid_argument on a path that
-  /// pathRejectionReason refuses.
+  /// +-smoothing_half_window metres (ends kept: the window shrinks there). A cusp end is first
+  /// extended by the point reflection of its last metres through the end point and cut back
+  /// after smoothing: the end stays where it is and the curvature falls smoothly to zero there.
+  /// Throws std::invalid_argument on a path that pathRejectionReason refuses.
   explicit SmoothPath(const std::vector<Pose2D>& poses, double spacing = 0.05,
-                      double smoothing_half_window = 0.15);
+                      double smoothing_half_window = 0.15, const CuspEnds& cusps = {});
 
   double length() const { return points_.back().s; }
   /// Point at arc length s (clamped to [0, length]); linear interpolation.

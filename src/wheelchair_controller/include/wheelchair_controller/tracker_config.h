@@ -22,6 +22,14 @@ struct TrackerConfig {
   /// A phase starting with P_l off its reference: the offset decays within these (accel,
   /// jerk) limits of its own (start_offset.h); the rider sees them amplified by the turning.
   MotionLimits start_offset_limits{0.0, 0.1, 0.2};
+  /// Reverse pieces: the output point P_r lies this far behind the axle (README, "Reverse": the
+  /// zero dynamics are stable only with the point on the side the chair moves towards).
+  double reverse_lookahead = 0.15;  ///< L_r [m]
+  double reverse_max_speed = 0.3;   ///< [m/s] speed limit in reverse (at most 0.3)
+  /// [rad] at a cusp (at rest) a larger difference between the heading the chair stops with and
+  /// the next piece's start heading is turned in place (each piece is smoothed on its own, so
+  /// their end tangents differ by a few degrees); driving off with it costs lateral jerk.
+  double cusp_heading_tolerance = 0.02;
   double start_heading_tolerance = 0.5;   ///< [rad] larger: rotate in place before the path
   double goal_position_tolerance = 0.05;  ///< [m] P_l at the end of the reference
   double goal_heading_tolerance = 0.05;   ///< [rad]
@@ -49,7 +57,8 @@ struct TrackerConfig {
 
 /// Keys: natural_frequency, damping, max_speed, max_accel, max_jerk (the path's comfort
 /// limits; the controlled stop brakes within the same linear accel and jerk),
-/// stale_pose_timeout, stale_odometry_timeout, pose_jump, dynamic_terms.
+/// reverse_lookahead, reverse_max_speed, stale_pose_timeout, stale_odometry_timeout, pose_jump,
+/// dynamic_terms.
 void readTrackerConfig(wheelchair_core::ConfigReader& reader, TrackerConfig& config);
 
 }  // namespace wheelchair_controller

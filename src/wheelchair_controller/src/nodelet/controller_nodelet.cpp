@@ -34,6 +34,7 @@ uint8_t goalStatusOf(TrackerState state) {
       return GoalStatus::PENDING;
     case TrackerState::kAligning:
     case TrackerState::kTracking:
+    case TrackerState::kReversing:
     case TrackerState::kRotatingToGoal:
       return GoalStatus::ACTIVE;
     case TrackerState::kStopping:

@@ -27,7 +27,7 @@ Eigen::Vector2d quantize(const Eigen::Vector2d& angles, double ticks_per_rev) {
 
 bool active(TrackerState s) {
   return s == TrackerState::kAligning || s == TrackerState::kTracking ||
-         s == TrackerState::kRotatingToGoal;
+         s == TrackerState::kReversing || s == TrackerState::kRotatingToGoal;
 }
 
 }  // namespace
@@ -87,13 +87,17 @@ ClosedLoopResult simulateClosedLoop(const std::vector<Pose2D>& path, const Pose2
     res.step_seconds.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 
-    const Eigen::Vector2d y_true = outputPoint(x.head<5>(), chair);
+    // The true output point the tracker controls in this phase (P_l, or P_r in reverse).
+    const Eigen::Vector2d y_true =
+        outputPoint(x.head<5>(), chair, out.has_reference ? out.output_offset : model.lookahead);
     if (out.has_reference && active(out.state)) {
       const double e = (y_true - out.reference.position).norm();
       err2_sum += e * e;
       res.max_error = std::max(res.max_error, e);
       if (e > kConvergedError) res.convergence_distance = travelled;
-      const double dev = tracker.state() == TrackerState::kTracking ? out.body_deviation : 0.0;
+      const bool on_path =
+          tracker.state() == TrackerState::kTracking || tracker.state() == TrackerState::kReversing;
+      const double dev = on_path ? out.body_deviation : 0.0;
       dev2_sum += dev * dev;
       res.body_deviation_max = std::max(res.body_deviation_max, dev);
       ++active_steps;
@@ -142,6 +146,14 @@ ClosedLoopResult simulateClosedLoop(const std::vector<Pose2D>& path, const Pose2
   res.final_position_error = (end.head<2>() - path.back().position()).norm();
   res.final_heading_error = std::remainder(end.z() - path.back().yaw, 2.0 * M_PI);
   return res;
+}
+
+PlantConfig heavierRiderPlant(const ChairParams& chair) {
+  PlantConfig plant;
+  plant.chair = chair;
+  plant.chair.total_mass += 15.0;
+  plant.chair.body_inertia *= 1.15;
+  return plant;
 }
 
 }  // namespace wheelchair_controller

@@ -10,7 +10,7 @@ PathBuilder& PathBuilder::straight(double length) {
   const Pose2D p0 = poses_.back();
   const int n = std::max(1, static_cast<int>(std::round(length / spacing_)));
   for (int i = 1; i <= n; ++i) {
-    const double s = length * i / n;
+    const double s = sign_ * length * i / n;
     poses_.push_back({p0.x + s * std::cos(p0.yaw), p0.y + s * std::sin(p0.yaw), p0.yaw});
   }
   return *this;
@@ -18,7 +18,8 @@ PathBuilder& PathBuilder::straight(double length) {
 
 PathBuilder& PathBuilder::arc(double radius, double angle) {
   const Pose2D p0 = poses_.back();
-  const double side = angle >= 0.0 ? 1.0 : -1.0;
+  // In reverse the heading turns left (angle > 0) about the centre on the right of the chair.
+  const double side = (angle >= 0.0 ? 1.0 : -1.0) * sign_;
   const Eigen::Vector2d centre(p0.x - side * radius * std::sin(p0.yaw),
                                p0.y + side * radius * std::cos(p0.yaw));
   const int n = std::max(1, static_cast<int>(std::round(std::abs(angle) * radius / spacing_)));
@@ -123,6 +124,18 @@ std::vector<Pose2D> cosinePath(double amplitude, double wavelength, double lengt
   for (double x = 0.0; x <= length + 1e-9; x += spacing)
     p.push_back({x, amplitude * std::cos(k * x), std::atan(-amplitude * k * std::sin(k * x))});
   return p;
+}
+
+std::vector<Pose2D> threePointTurnPath() {
+  return PathBuilder({0.0, 0.0, 0.0})
+      .straight(0.3)
+      .arc(0.8, M_PI / 2)
+      .reverse()
+      .arc(0.8, M_PI / 2)
+      .forward()
+      .arc(1.0, M_PI / 2)
+      .straight(0.5)
+      .poses();
 }
 
 }  // namespace wheelchair_controller

@@ -35,6 +35,9 @@ struct ChairParams {
   wheelchair_core::Polygon footprint;
   /// Laser scanner mount in base_link: x, y, z [m], yaw [rad] (keys laser/x ... laser/yaw).
   double laser_x = 0.0, laser_y = 0.0, laser_z = 0.0, laser_yaw = 0.0;
+  /// Rear laser scanner mount in base_link, looking behind the chair (keys rear_laser/x ...
+  /// rear_laser/yaw): what guards reverse motion.
+  double rear_laser_x = 0.0, rear_laser_y = 0.0, rear_laser_z = 0.0, rear_laser_yaw = 0.0;
 
   /// Radius of the largest circle about P inside the footprint's width: width / 2.
   double inscribedRadius() const { return 0.5 * width; }
@@ -49,7 +52,7 @@ struct ChairParams {
 };
 
 /// Every key of a chair file, each required: the scalars by their member names, footprint
-/// (a list of [x, y]) and laser/x, laser/y, laser/z, laser/yaw.
+/// (a list of [x, y]), laser/x, laser/y, laser/z, laser/yaw and rear_laser/x ... rear_laser/yaw.
 void readChairParams(wheelchair_core::ConfigReader& reader, ChairParams& params);
 
 /// Reads and validates a chair file. Throws wheelchair_core::ConfigError naming the file and

@@ -12,6 +12,7 @@ namespace wheelchair_description {
 constexpr const char* kBaseFootprintFrame = "base_footprint";
 constexpr const char* kBaseLinkFrame = "base_link";
 constexpr const char* kLaserFrame = "laser";
+constexpr const char* kRearLaserFrame = "rear_laser";
 constexpr const char* kLeftWheelJoint = "left_wheel_joint";
 constexpr const char* kRightWheelJoint = "right_wheel_joint";
 

@@ -43,6 +43,11 @@ struct Certificate {
   std::string first_stage_sweep;  ///< why the first stage's path failed its sweep, if it did
   int search_expansions = 0;      ///< footprint search nodes expanded (0: not run)
   double search_time = 0.0;       ///< [s]
+  // Direction (wheelchair_core/path_direction.h): the plan split at its cusps.
+  int cusps = 0;                          ///< changes of direction (the chair stops at each)
+  double reversed_length = 0.0;           ///< [m] driven in reverse
+  std::vector<bool> segment_reverse;      ///< per piece: driven in reverse
+  std::vector<double> segment_clearance;  ///< per piece: smallest footprint clearance [m]
 };
 
 }  // namespace wheelchair_planner

@@ -1,9 +1,13 @@
-// Footprint-aware (x, y, heading) search: Hybrid A* with forward motion primitives only
-// (straight and arcs; no reversing: the only laser looks forward), an optional in-place rotation
-// at the start (the controller rotates at rest before a path), cost = length + a soft-clearance
-// penalty, heuristic = the geodesic distance to the goal on the grid. A candidate path counts
-// only when its executed sweep (sweep_check.h: the controller's smoothing and the final rotation)
-// keeps the hard minimum footprint clearance.
+// Footprint-aware (x, y, heading) search: Hybrid A* with forward and reverse motion primitives
+// (straight and arcs either way, Reeds-Shepp-like as in Nav2's Smac Hybrid-A*), an optional
+// in-place rotation at the start (the controller rotates at rest before a path), cost = length +
+// a soft-clearance penalty, reversed metres weighted by reverse_cost, each cusp (stop, change of
+// direction) cusp_cost, at most max_cusps cusps and max_reverse_length reversed; heuristic = the
+// geodesic distance to the goal on the grid. The path's poses carry the chair's heading, so its
+// reverse pieces face against their motion (wheelchair_core/path_direction.h). A candidate path
+// counts only when its executed sweep (sweep_check.h: the controller's smoothing, its stops and
+// turns at the cusps and the final rotation) keeps the hard minimum footprint clearance. The
+// lattice settings share one budget (time and expansions), used to the end.
 #pragma once
 
 #include <wheelchair_planner/footprint_checker.h>
@@ -15,7 +19,18 @@
 namespace wheelchair_planner {
 
 struct FootprintSearchParams {
-  double time_limit = 3.0;                        ///< [s] wall time
+  double time_limit = 3.0;          ///< [s] wall time, the whole search (every setting)
+  int max_expansions = 200000;      ///< the whole search (every setting)
+  bool reverse = true;              ///< reverse primitives (the chair senses behind itself)
+  double reverse_cost = 2.0;        ///< cost of a reversed metre relative to a forward one
+  double cusp_cost = 1.0;           ///< [m] cost of each cusp
+  int max_cusps = 3;                ///< direction changes per path
+  double max_reverse_length = 5.0;  ///< [m] reversed per path
+  /// Analytic expansion: from nodes within analytic_distance [m] (geodesic) of the goal, the
+  /// shortest Reeds-Shepp path to the goal pose with turning radius analytic_radius [m] is
+  /// tried; it reaches the goal heading exactly (where the final rotation would hit).
+  double analytic_distance = 3.0;
+  double analytic_radius = 0.5;
   std::vector<double> radii{2.0, 1.0, 0.6, 0.4};  ///< arc radii [m], both sides, plus straight
   int heading_bins = 72;                          ///< 5 degrees
   double xy_bin = 0.1;                            ///< [m]
@@ -35,7 +50,8 @@ struct FootprintSearchParams {
     double margin;
     double step;
   };
-  /// Tried in order until one finds a path, each for at most `attempt_expansions`. Through an
+  /// Tried in order, each for `attempt_expansions` (a slice); then, while the budget lasts, each
+  /// that can go on gets another slice in turn, until one finds a path. Through an
   /// 80-85 cm door the lattice (bins, 5 degree headings, step) either lands in the few
   /// centimetres the body has or not, and which setting does changes with a 0.01 rad change of
   /// the start heading (flat, island -> bedroom door, 5 start headings 3.05-3.16: each setting
@@ -45,21 +61,24 @@ struct FootprintSearchParams {
   std::vector<Attempt> attempts{{1.5, 0.015, 0.15}, {2.5, 0.005, 0.15}, {2.0, 0.0, 0.15},
                                 {2.5, 0.005, 0.20}, {2.0, 0.0, 0.12},   {2.0, 0.0, 0.20},
                                 {2.5, 0.005, 0.12}, {3.0, 0.0, 0.15}};
-  int attempt_expansions = 3000;  ///< per attempt: deterministic, whatever the machine's load
+  int attempt_expansions = 3000;  ///< per slice: deterministic, whatever the machine's load
   int max_candidates = 200;       ///< goal-region arrivals whose sweep is verified
 };
 
 struct FootprintSearchResult {
   bool found = false;
-  std::vector<Pose2D> path;  ///< start position ... goal (goal heading on the last pose)
-  SweepCheck sweep;          ///< the found path's executed sweep, verified
+  std::vector<Pose2D> path;      ///< start position ... goal (goal heading on the last pose)
+  SweepCheck sweep;              ///< the found path's executed sweep, verified
+  int cusps = 0;                 ///< direction changes of the found path
+  double reversed_length = 0.0;  ///< [m] of the found path's primitives driven in reverse
   size_t expansions = 0;
   double time = 0.0;   ///< [s]
-  std::string reason;  ///< on failure
+  std::string reason;  ///< on failure: what was tried, why it ended, where the body would hit
 };
 
-/// Tries params.attempts in order (each a weighted A* run, search_attempt.h) within
-/// params.time_limit until one finds a path whose executed sweep (`sweep`) passes.
+/// Runs params.attempts (each a weighted A* run, search_attempt.h) in slices on one budget
+/// (params.time_limit, params.max_expansions) until one finds a path whose executed sweep
+/// (`sweep`) passes, or every setting has explored all it reaches, or the budget is spent.
 FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pose2D& start,
                                       const Pose2D& goal, const FootprintSearchParams& params,
                                       const SweepModel& sweep = SweepModel());

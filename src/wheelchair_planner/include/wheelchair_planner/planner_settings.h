@@ -26,7 +26,9 @@ struct PlannerSettings {
 PlannerSettings plannerSettings(const wheelchair_description::ChairParams& chair);
 
 /// Keys: the C-space's (readConfigSpaceParams) and the gate's footprint_repair,
-/// footprint_search_time, footprint_goal_tolerance.
+/// footprint_search_time, footprint_search_expansions (one budget for the whole search),
+/// footprint_goal_tolerance, footprint_reverse, footprint_max_cusps,
+/// footprint_max_reverse_length, footprint_reverse_cost, footprint_cusp_cost.
 void readPlannerSettings(wheelchair_core::ConfigReader& reader, PlannerSettings& settings);
 
 }  // namespace wheelchair_planner

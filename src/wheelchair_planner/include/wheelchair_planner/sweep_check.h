@@ -51,6 +51,9 @@ struct SweepCheck {
   FootprintContact contact;    ///< where the body comes closest
   Pose2D worst_pose;           ///< the body pose there
   SweepPose::Phase worst_phase = SweepPose::Phase::kPath;
+  /// Smallest footprint clearance per piece of the plan (split at its cusps; a turn in place
+  /// before a piece counts to it) [m].
+  std::vector<double> piece_clearance;
   size_t poses = 0;    ///< number of poses checked
   std::string reason;  ///< on failure: where the body would hit, one line
 };

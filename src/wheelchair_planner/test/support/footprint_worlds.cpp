@@ -1,4 +1,5 @@
 #include <wheelchair_controller/smooth_path.h>
+#include <wheelchair_core/path_direction.h>
 #include <wheelchair_planner_test/footprint_worlds.h>
 
 #include <algorithm>
@@ -76,19 +77,26 @@ double bruteClearance(const OccupancyMap& map, const Pose2D& pose) {
 
 double bruteSweepClearance(const OccupancyMap& map, const Pose2D& start,
                            const std::vector<Pose2D>& plan) {
-  const wheelchair_controller::SmoothPath path(plan);
   std::vector<Pose2D> body;
   const auto rotate = [&](double x, double y, double a0, double a1) {
     const double d = std::remainder(a1 - a0, 2.0 * M_PI);
     for (int k = 0; k <= 60; ++k) body.push_back({x, y, a0 + d * k / 60.0});
   };
-  rotate(start.x, start.y, start.yaw, path.at(0.0).heading);
-  for (double s = 0.0; s <= path.length(); s += 0.01) {
-    const auto q = path.at(s);
-    body.push_back({q.position.x(), q.position.y(), q.heading});
+  // Piece by piece (split at the cusps): a reverse piece faces against its tangent.
+  Pose2D at = start;
+  for (const wheelchair_core::PathPiece& piece : wheelchair_core::splitAtCusps(plan)) {
+    const std::vector<Pose2D> poses(plan.begin() + piece.begin, plan.begin() + piece.end + 1);
+    const wheelchair_controller::SmoothPath path(poses);
+    const double flip = piece.direction == wheelchair_core::Direction::kReverse ? M_PI : 0.0;
+    rotate(at.x, at.y, at.yaw, path.at(0.0).heading + flip);
+    for (double s = 0.0; s <= path.length(); s += 0.01) {
+      const auto q = path.at(s);
+      body.push_back({q.position.x(), q.position.y(), q.heading + flip});
+    }
+    const auto end = path.at(path.length());
+    at = {end.position.x(), end.position.y(), end.heading + flip};
   }
-  const auto end = path.at(path.length());
-  rotate(end.position.x(), end.position.y(), end.heading, plan.back().yaw);
+  rotate(at.x, at.y, at.yaw, plan.back().yaw);
   double best = 1e9;
   for (const Pose2D& p : body) best = std::min(best, bruteClearance(map, p));
   return best;

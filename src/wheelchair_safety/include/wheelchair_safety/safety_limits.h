@@ -23,6 +23,12 @@ struct SafetyLimits {
   /// controller that re-arms within one command period (a late command) is not worth a
   /// latched stop; a fault that persists (hardware, lost bus) is.
   double driver_fault_grace = 0.25;
+  // Behind the chair (rear_guard.h), while the path backs up.
+  double rear_scan_timeout = 0.3;  ///< [s] rear laser silent this long -> no reverse motion
+  /// [m] watched behind the body's rear: reverse speed is at most 0.3 m/s, which stops within
+  /// 0.3 * 0.2 s + 0.3^2 / (2 * 0.5 m/s^2) = 0.15 m; the rest is margin.
+  double rear_stop_distance = 0.5;
+  double rear_overhang = 0.80;  ///< [m] the body's reach behind the axle (chair.yaml footprint)
 
   /// "" if usable, else every problem.
   std::string validate() const;

@@ -8,6 +8,7 @@
 #include <wheelchair_core/occupancy_map.h>
 #include <wheelchair_core/pose2d.h>
 #include <wheelchair_safety/protective_field.h>
+#include <wheelchair_safety/rear_guard.h>
 #include <wheelchair_safety/safety_limits.h>
 
 #include <Eigen/Core>
@@ -28,6 +29,8 @@ enum class StopReason {
   kUnexpectedObstacle,
   kDriverFault,
   kUserStop,
+  kRearSensorSilent,  ///< the path backs up and the rear laser is silent (rear_guard.h)
+  kObstacleBehind,    ///< something unmapped behind the chair on the path it backs along
 };
 
 /// Words for the rider: short, no frames or coordinates (e.g. "the laser scanner is silent").
@@ -72,6 +75,8 @@ class SafetySupervisor {
   /// The chair's forward speed [m/s] (odometry); it scales the protective field. Non-finite
   /// values are ignored.
   void onSpeed(double stamp, double forward_speed);
+  /// The rear laser's returns in the map frame (rear_guard.h: they guard reverse motion).
+  void onRearScan(double stamp, const std::vector<Eigen::Vector2d>& returns_in_map);
   /// The base driver's status at `stamp`; a fault counts once it has lasted driver_fault_grace.
   void onDriverStatus(double stamp, bool fault, const std::string& detail);
   void onUserStop(double stamp);
@@ -98,6 +103,7 @@ class SafetySupervisor {
   double speed_ = 0.0;
   SpeedLimit obstacle_limit_, view_limit_;
   double nearest_unexpected_ = INFINITY;  ///< along the path from the axle [m]
+  RearGuard rear_;
   wheelchair_core::OccupancyMap map_;
   std::vector<Eigen::Vector2d> path_;
   double scan_stamp_ = -1.0, pose_stamp_ = -1.0, localization_stamp_ = -1.0;

@@ -29,6 +29,12 @@ struct SimParams {
   double laser_range_min = 0.05;              ///< [m]
   double laser_range_max = 30.0;              ///< [m]
   double laser_range_noise = 0.01;            ///< Gaussian range noise std [m]
+  // Rear safety laser (nanoScan3 / TiM-S class, chair.yaml rear_laser: the 180 deg behind the
+  // body): rate, range_min and noise as the front laser's.
+  bool rear_laser_enabled = true;
+  int rear_laser_beams = 361;
+  double rear_laser_fov = 3.14159265358979323846;  ///< [rad]
+  double rear_laser_range_max = 10.0;              ///< [m]
   // Wheel-encoder odometry errors.
   double odom_rate = 50.0;               ///< [Hz] of /odom and tf odom -> base_link
   double odom_radius_error_right = 0.0;  ///< relative error of the assumed right radius
@@ -43,6 +49,9 @@ struct SimParams {
 
 /// Every key above, by its member's name.
 void readSimParams(wheelchair_core::ConfigReader& reader, SimParams& params);
+
+/// The rear laser's parameters in the front laser's keys (laser_*), for a LaserSimulator.
+SimParams rearLaserParams(const SimParams& params);
 
 /// Reads and validates a YAML file of these keys; missing keys keep their defaults. Throws
 /// wheelchair_core::ConfigError naming the file and the unknown, mistyped or invalid key.

@@ -1,5 +1,6 @@
 // The whole simulated chair as the nodelet and the benchmark run it: ground truth
-// (Simulator), wheel-encoder odometry and the laser, each sensor on its own schedule.
+// (Simulator), wheel-encoder odometry and the lasers (front and rear), each sensor on its own
+// schedule.
 #pragma once
 
 #include <wheelchair_core/laser_scan.h>
@@ -16,6 +17,7 @@ namespace wheelchair_sim {
 struct SensorOutputs {
   bool odometry_due = false;                         ///< publish /odom, tf and ground truth now
   std::optional<wheelchair_core::LaserScan2D> scan;  ///< a new scan, stamped the new time
+  std::optional<wheelchair_core::LaserScan2D> rear_scan;  ///< a new rear scan, the same time
   bool collision_started = false;  ///< the chair hit something during this advance
 };
 
@@ -47,11 +49,12 @@ class SimulatedChair {
   const Simulator& simulator() const { return sim_; }
   const WheelOdometry& odometry() const { return odometry_; }
   bool hasLaser() const { return laser_.has_value(); }
+  bool hasRearLaser() const { return rear_laser_.has_value(); }
 
  private:
   Simulator sim_;
   WheelOdometry odometry_;
-  std::optional<LaserSimulator> laser_;
+  std::optional<LaserSimulator> laser_, rear_laser_;
   Schedule odom_schedule_, scan_schedule_;
 };
 

@@ -29,7 +29,8 @@ struct SimulatorSettings {
   double torque_timeout = 0.5;      ///< [s] simulated, without /wheel_torques -> zero torque
   wheelchair_core::Pose2D initial;  ///< keys initial_x, initial_y, initial_yaw
   bool publish_odometry = true;     ///< /odom and tf odom -> base_link (never on a motor bus)
-  bool publish_laser_tf = false;    ///< static base_link -> laser (else the description's)
+  bool publish_laser_tf = false;    ///< static base_link -> laser, rear_laser (else the
+                                    ///< description's)
   /// "" = torques from /wheel_torques; "udp" or "fake": play the chair's CAN motor controller
   /// on CAN over UDP (the base driver in another process) or on the fake bus of this process.
   std::string motor_bus;
@@ -41,6 +42,7 @@ struct SimulatorSettings {
   std::string odom_frame = "odom";
   std::string base_frame = wheelchair_description::kBaseLinkFrame;
   std::string laser_frame = wheelchair_description::kLaserFrame;
+  std::string rear_laser_frame = wheelchair_description::kRearLaserFrame;
 
   /// "" if usable, else every problem (the simulation's included).
   std::string validate() const;

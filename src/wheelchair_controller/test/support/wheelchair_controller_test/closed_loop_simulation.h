@@ -60,6 +60,10 @@ struct ClosedLoopResult {
   std::vector<TraceSample> trace;
 };
 
+/// The shipped chair with a heavier rider (+15 kg, body inertia +15 %) than the controller's
+/// model: the plant of the tests that check the motion the controller exports.
+PlantConfig heavierRiderPlant(const ChairParams& chair);
+
 /// Runs until the tracker reaches the goal or aborts (or max_time). The chair starts at rest
 /// with its axle centre at `start`.
 ClosedLoopResult simulateClosedLoop(const std::vector<Pose2D>& path, const Pose2D& start,

@@ -33,8 +33,9 @@ double bruteClearance(const wheelchair_core::OccupancyMap& map,
                       const wheelchair_core::Pose2D& pose);
 
 /// The controller's execution of `plan` from `start`, rebuilt from its SmoothPath: start
-/// rotation, the smoothed path every 1 cm with its tangent, the goal rotation; brute-force
-/// clearance of every pose.
+/// rotation, per piece (split at its cusps) the smoothed path every 1 cm with its tangent (+ pi
+/// in reverse) and the turn to it at the cusp, the goal rotation; brute-force clearance of every
+/// pose.
 double bruteSweepClearance(const wheelchair_core::OccupancyMap& map,
                            const wheelchair_core::Pose2D& start,
                            const std::vector<wheelchair_core::Pose2D>& plan);

@@ -1,0 +1,59 @@
+#!/usr/bin/env python3
+"""Issue 24: the chair parked in the study facing into it (its rear towards the 80 cm door onto
+the 1.2 m hallway) goes to the living room. Forwards there is no way out: turning on the spot
+sweeps 1.72 m and the hallway is 1.2 m wide. The planner backs it out through the door
+(reverse pieces, at most 3 cusps), the controller tracks them backwards (at most 0.3 m/s) and
+the chair reaches the goal within 10 cm / 10 deg without touching anything."""
+import math
+import os
+import sys
+import unittest
+
+import rospy
+import rostest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from reverse_watch import ReverseWatch  # noqa: E402
+from wheelchair_test.harness import Rider  # noqa: E402
+
+START = (7.0, 7.4, 0.0)  # in the study, facing away from its door
+GOAL = (3.0, 2.2, 0.0)   # living_centre
+
+
+class LeaveStudy(unittest.TestCase):
+    def test_backs_out_of_the_study_and_reaches_the_living_room(self):
+        s = Rider("test_leave_study")
+        watch = ReverseWatch()
+        self.assertEqual(s.wait_ready(), "")
+        self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
+        since = s.mark()
+        s.send_goal(*GOAL)
+        done = s.wait(lambda: s.controller_says("goal_reached", since) or
+                      s.controller_says("aborted", since) or s.collided or
+                      s.announced("Cannot go there", since), 220.0)
+        what = s.describe(since)
+        self.assertTrue(done and s.controller_says("goal_reached", since), what)
+        self.assertTrue(s.wait(s.at_rest, 20.0))
+        distance, heading = s.error_to(*GOAL)
+        self.assertLess(distance, 0.10, what)
+        self.assertLess(heading, math.radians(10), what)
+        self.assertFalse(s.collided, "collision: " + what)
+        backed = watch.reversed_distance(since.time)
+        slowest = watch.slowest(since.time)
+        self.assertGreater(backed, 0.5, "the chair did not back out: " + what)
+        self.assertGreater(slowest, -0.3 - 0.03, "reverse faster than 0.3 m/s")
+        with s.lock:
+            certs = [c for c in s.certificates if c.reversed_length > 0.0]
+        self.assertTrue(certs, "no certificate with a reversed piece")
+        cert = certs[-1]
+        self.assertLessEqual(cert.cusps, 3)
+        self.assertGreaterEqual(min(cert.segment_clearance), 0.05 - 0.005)
+        rospy.loginfo("leave_study: reached %.3f m / %.1f deg off after %.1f s (sim), %.2f m "
+                      "driven, %.2f m backed (slowest %.2f m/s); plan: %d cusps, %.2f m reversed, "
+                      "search %.2f s", distance, math.degrees(heading),
+                      rospy.get_time() - since.time, s.travelled(since), backed, slowest,
+                      cert.cusps, cert.reversed_length, cert.search_time)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("wheelchair_test", "leave_study", LeaveStudy, sys.argv)
