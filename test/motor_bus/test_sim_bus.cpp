@@ -1,15 +1,17 @@
 // rostest client of the simulator on the motor bus (~motor_bus = udp) with the real base driver
-// in between: /wheel_torques -> driver -> CAN frames over UDP -> emulated motor controller ->
-// simulated wheels -> encoder frames -> driver's /odom. The expectation is the simulator's
-// ground truth (sim/ground_truth), independent of the driver's encoder odometry.
-// Room world of test/worlds: free for x in [-2, 8], y in [-3, 3]; chair at the origin facing +x.
+// in between: commands (the drive channel of this process, which loads the driver nodelet, as in
+// the chair process; with a permit per command) -> driver -> CAN frames over UDP -> emulated
+// motor controller -> simulated wheels -> encoder frames -> driver's /odom. The expectation is the
+// simulator's ground truth (sim/ground_truth), independent of the driver's encoder odometry. Room
+// world of test/worlds: free for x in [-2, 8], y in [-3, 3]; chair at the origin facing +x.
 #include <wheelchair_sim_testing/ros_wait.h>
 
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
+#include <nodelet/loader.h>
 #include <ros/ros.h>
-#include <wheelchair_msgs/WheelTorques.h>
 #include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/drive_channel.h>
 
 #include <cmath>
 #include <cstdio>
@@ -35,19 +37,26 @@ class SimOnBus : public ::testing::Test {
                                                     odom_ = *m;
                                                     ++odoms_;
                                                   });
-    torque_pub_ = nh_.advertise<wheelchair_msgs::WheelTorques>("wheel_torques", 10);
     ASSERT_TRUE(waitFor([this] { return truths_ > 0 && odoms_ > 0; }, 20.0))
         << "no sim/ground_truth from the simulator or no /odom from the base driver (encoders)";
   }
 
-  /// A controller at 50 Hz of simulated time (the driver's watchdogs run in simulated time).
+  /// A controller and a supervisor at 50 Hz of simulated time (the driver's watchdogs run in
+  /// simulated time).
   void startTorques(double left, double right) {
     timer_ = nh_.createTimer(ros::Duration(0.02), [this, left, right](const ros::TimerEvent&) {
-      wheelchair_msgs::WheelTorques m;
-      m.header.stamp = ros::Time::now();
+      auto channel = wheelchair_ros::driveChannel();
+      wheelchair_ros::DrivePermit permit;
+      permit.sequence = ++sequence_;
+      permit.stamp = ros::Time::now().toSec();
+      channel->grant(permit);
+      wheelchair_ros::DriveCommand m;
+      m.stamp = ros::Time::now().toSec();
+      m.sequence = sequence_;
       m.left = left;
       m.right = right;
-      torque_pub_.publish(m);
+      m.brake = false;
+      channel->submit(m);
     });
   }
   void stopTorques() { timer_.stop(); }
@@ -60,15 +69,15 @@ class SimOnBus : public ::testing::Test {
 
   ros::NodeHandle nh_;
   ros::Subscriber truth_sub_, odom_sub_;
-  ros::Publisher torque_pub_;
   ros::Timer timer_;
+  std::uint64_t sequence_ = 0;
   nav_msgs::Odometry truth_, odom_;
   double max_speed_ = 0.0;
   int truths_ = 0, odoms_ = 0;
 };
 
 // Equal positive torques drive the chair forward; the driver's encoder odometry measures the
-// ground-truth displacement; silence on /wheel_torques brakes the chair to a stop.
+// ground-truth displacement; command silence brakes the chair to a stop.
 TEST_F(SimOnBus, TorquesThroughTheDriverMoveTheChairAndSilenceBrakes) {
   ASSERT_TRUE(waitSim(0.5));  // chair at rest, driver and controller past their start-up
   const nav_msgs::Odometry truth0 = truth_, odom0 = odom_;
@@ -106,5 +115,9 @@ int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "test_sim_bus");
   ros::NodeHandle nh;
-  return RUN_ALL_TESTS();
+  nodelet::Loader loader(false);  // the driver, with bus.test's /base_driver parameters
+  if (!loader.load("/base_driver", "wheelchair_base_driver/BaseDriverNodelet", {}, {})) return 1;
+  const int result = RUN_ALL_TESTS();
+  loader.unload("/base_driver");
+  return result;
 }

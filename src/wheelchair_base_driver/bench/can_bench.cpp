@@ -92,6 +92,7 @@ RealtimeOutcome runRealtime(CanTransport& driver_port, CanTransport& chair_port,
   DriverConfig config;
   config.geometry = {0.17, 0.275, 4096, 40};
   config.max_torque = 25;
+  config.max_speed = 1.5;
   BaseDriverCore driver(config, driver_port);
   std::mutex mutex;
   std::condition_variable cv;
@@ -171,14 +172,16 @@ RealtimeOutcome runRealtime(CanTransport& driver_port, CanTransport& chair_port,
 
   // The driver thread: waits for messages like a ROS callback, spins at least every 2 ms.
   std::thread driver_thread([&] {
+    std::uint64_t permits = 0, commands = 0;
     while (!done) {
+      driver.onPermit(++permits, 1, seconds(), false, seconds());  // the bench is the supervisor
       std::unique_lock<std::mutex> lock(mutex);
       cv.wait_for(lock, std::chrono::milliseconds(2), [&] { return !queue.empty() || done; });
       while (!queue.empty()) {
         const auto [index, t] = queue.front();
         queue.pop_front();
         lock.unlock();
-        driver.onTorqueMessage(indexTorque(index), 0.0, false, 0.0, seconds());
+        driver.onCommand({indexTorque(index), 0.0, false, t, ++commands, 1}, seconds());
         lock.lock();
       }
       lock.unlock();

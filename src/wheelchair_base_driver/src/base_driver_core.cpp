@@ -2,6 +2,7 @@
 #include <wheelchair_can/can_error.h>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace wheelchair_base_driver {
@@ -12,7 +13,13 @@ namespace protocol = wheelchair_can::protocol;
 using protocol::ControllerState;
 
 namespace {
-constexpr double kScheduleSlack = 1e-3;  ///< [s] timer jitter tolerated by periodic frames
+constexpr double kScheduleSlack = 1e-3;    ///< [s] timer jitter tolerated by periodic frames
+constexpr double kFutureTolerance = 0.01;  ///< [s] a stamp this far ahead is still "now"
+constexpr double kEncoderFresh = 0.05;     ///< [s] encoder frames (100 Hz) newer than this flow
+/// MC fault bits that are its watchdogs: it braked because commands came late or not at all.
+constexpr std::uint16_t kWatchdogFaults = protocol::kFaultCommandTimeout |
+                                          protocol::kFaultDriverHeartbeatLost |
+                                          protocol::kFaultStaleCommand;
 
 /// Periodic frames on a grid of `period`: due up to kScheduleSlack early, so a timer spinning
 /// at the frame rate (ticks a little early or late) keeps the rate instead of skipping every
@@ -22,6 +29,24 @@ bool dueOnGrid(double now, double period, bool force, double& next_due) {
   if (!force && now < next_due - kScheduleSlack) return false;
   next_due = (force || now - next_due > period) ? now + period : next_due + period;
   return true;
+}
+
+bool isProtocolId(std::uint32_t id) {
+  return id == protocol::kTorqueCommandId || id == protocol::kEncoderId ||
+         id == protocol::kControllerStatusId || id == protocol::kDriverHeartbeatId ||
+         id == protocol::kControllerHeartbeatId;
+}
+
+std::string format(const char* fmt, double value) {
+  char text[160];
+  std::snprintf(text, sizeof(text), fmt, value);
+  return text;
+}
+
+/// The rider's words for the motor controller's fault bits.
+const char* faultSentence(std::uint16_t faults) {
+  if (faults != 0 && (faults & ~kWatchdogFaults) == 0) return "the motor commands came too late";
+  return "the motors report a fault";
 }
 }  // namespace
 
@@ -35,10 +60,18 @@ const char* driverStateName(DriverState s) {
       return "motor_controller_fault";
     case DriverState::kEstop:
       return "estop";
+    case DriverState::kLatched:
+      return "latched_stop";
+    case DriverState::kNoPermit:
+      return "no_safety_permit";
     case DriverState::kWaitingForCommand:
       return "waiting_for_command";
     case DriverState::kCommandTimeout:
       return "command_timeout";
+    case DriverState::kSupervisorStop:
+      return "safety_stop";
+    case DriverState::kStopping:
+      return "stopping";
     case DriverState::kBraking:
       return "braking";
     case DriverState::kDriving:
@@ -49,8 +82,11 @@ const char* driverStateName(DriverState s) {
 
 bool isFault(DriverState s) {
   return s == DriverState::kNoController || s == DriverState::kControllerLost ||
-         s == DriverState::kControllerFault || s == DriverState::kEstop;
+         s == DriverState::kControllerFault || s == DriverState::kEstop ||
+         s == DriverState::kLatched || s == DriverState::kNoPermit;
 }
+
+bool isMoving(DriverState s) { return s == DriverState::kDriving || s == DriverState::kStopping; }
 
 const char* torqueVerdictName(TorqueVerdict v) {
   switch (v) {
@@ -61,7 +97,33 @@ const char* torqueVerdictName(TorqueVerdict v) {
     case TorqueVerdict::kOutOfRange:
       return "torque beyond max_torque";
     case TorqueVerdict::kStale:
-      return "stale message (header stamp older than command_timeout)";
+      return "stale command (stamp older than command_timeout)";
+    case TorqueVerdict::kFuture:
+      return "command stamped in the future";
+    case TorqueVerdict::kReplayed:
+      return "replayed command (sequence not increasing)";
+    case TorqueVerdict::kUnstamped:
+      return "command without a stamp";
+  }
+  return "?";
+}
+
+const char* latchCauseName(LatchCause c) {
+  switch (c) {
+    case LatchCause::kNone:
+      return "none";
+    case LatchCause::kInterrupted:
+      return "drive interrupted";
+    case LatchCause::kForeignCommand:
+      return "foreign command";
+    case LatchCause::kCorruptStream:
+      return "corrupted command stream";
+    case LatchCause::kOverspeed:
+      return "overspeed";
+    case LatchCause::kEncoderFault:
+      return "encoder fault";
+    case LatchCause::kControllerStalled:
+      return "motor controller stalled";
   }
   return "?";
 }
@@ -72,28 +134,40 @@ BaseDriverCore::BaseDriverCore(const DriverConfig& config, wheelchair_can::CanTr
   if (!problem.empty()) throw std::invalid_argument("base driver: " + problem);
 }
 
-TorqueVerdict BaseDriverCore::onTorqueMessage(double left, double right, bool brake, double stamp,
-                                              double now) {
+TorqueVerdict BaseDriverCore::onCommand(const DriveInput& c, double now) {
   ++counters_.torque_messages;
   TorqueVerdict verdict = TorqueVerdict::kAccepted;
-  if (!std::isfinite(left) || !std::isfinite(right)) {
+  if (!std::isfinite(c.left) || !std::isfinite(c.right)) {
     verdict = TorqueVerdict::kNonFinite;
-    ++counters_.rejected_non_finite;
-  } else if (std::abs(left) > config_.max_torque || std::abs(right) > config_.max_torque) {
+  } else if (std::abs(c.left) > config_.max_torque || std::abs(c.right) > config_.max_torque) {
     verdict = TorqueVerdict::kOutOfRange;
-    ++counters_.rejected_out_of_range;
-  } else if (stamp > 0 && now - stamp >= config_.command_timeout) {
+  } else if (!(c.stamp > 0) || !std::isfinite(c.stamp)) {
+    verdict = TorqueVerdict::kUnstamped;
+  } else if (now - c.stamp >= config_.command_timeout) {
     verdict = TorqueVerdict::kStale;
-    ++counters_.rejected_stale;
+  } else if (c.stamp - now > kFutureTolerance) {
+    verdict = TorqueVerdict::kFuture;
+  } else if (has_command_sequence_ && c.session == command_session_ &&
+             c.sequence <= command_sequence_in_) {
+    verdict = TorqueVerdict::kReplayed;
   }
   if (verdict == TorqueVerdict::kAccepted) {
     has_message_ = true;
     last_message_time_ = now;
-    message_left_ = left;
-    message_right_ = right;
-    message_brake_ = brake;
+    message_left_ = c.left;
+    message_right_ = c.right;
+    message_brake_ = c.brake;
+    message_stamp_ = c.stamp;
+    has_command_sequence_ = true;
+    command_session_ = c.session;
+    command_sequence_in_ = c.sequence;
+    // The controlled stop ends in the brake: from then on braked until the stop is released.
+    if (c.brake && (latch_.cause != LatchCause::kNone || permit_stop_)) sticky_brake_ = true;
   } else {
-    // A rejected message is a stop request: the previous command must not continue.
+    if (verdict == TorqueVerdict::kNonFinite) ++counters_.rejected_non_finite;
+    if (verdict == TorqueVerdict::kOutOfRange) ++counters_.rejected_out_of_range;
+    if (verdict >= TorqueVerdict::kStale) ++counters_.rejected_stale;
+    // A rejected command is a stop request: the previous command must not continue.
     last_rejection_ = torqueVerdictName(verdict);
     has_message_ = false;
     block_time_ = now;
@@ -102,23 +176,82 @@ TorqueVerdict BaseDriverCore::onTorqueMessage(double left, double right, bool br
   return verdict;
 }
 
+void BaseDriverCore::onPermit(std::uint64_t sequence, std::uint64_t session, double stamp,
+                              bool stop, double now) {
+  const bool replayed = has_permit_ && session == permit_session_ && sequence <= permit_sequence_;
+  if (replayed || !std::isfinite(stamp) || now - stamp >= config_.permit_timeout ||
+      stamp - now > kFutureTolerance) {
+    ++counters_.permits_refused;
+    return;
+  }
+  ++counters_.permits;
+  has_permit_ = true;
+  permit_session_ = session;
+  permit_sequence_ = sequence;
+  permit_time_ = stamp;
+  if (stop && !permit_stop_) permit_stop_since_ = now;
+  if (!stop && permit_stop_) {
+    block_time_ = now;  // the stop lifted: motion only on a command decided after it
+    if (latch_.cause == LatchCause::kNone) sticky_brake_ = false;
+  }
+  permit_stop_ = stop;
+  update(now, false);
+}
+
+void BaseDriverCore::onForeignCommand(const std::string& who, double now) {
+  ++counters_.foreign_publishers;
+  latch(LatchCause::kForeignCommand, true, "another program tried to drive the chair",
+        "wheel torques published by " + who, now);
+  update(now, true);
+}
+
 void BaseDriverCore::engageEstop(double now) {
   if (!estop_) ++counters_.estops;
   estop_ = true;
   update(now, true);
 }
 
-void BaseDriverCore::clearEstop(double now) {
+void BaseDriverCore::riderRelease(double now) {
   estop_ = false;
+  latch_ = Latch();
+  sticky_brake_ = false;
   block_time_ = now;
+  // The brake frame sent now re-arms the MC's bad-frame report; a new bad frame sets it again.
+  mc_faults_ &= static_cast<std::uint16_t>(~protocol::kReportOnlyFaults);
   update(now, true);
 }
 
-void BaseDriverCore::spinOnce(double now) {
+void BaseDriverCore::latch(LatchCause cause, bool brake_now, const std::string& sentence,
+                           const std::string& detail, double now) {
+  if (latch_.cause != LatchCause::kNone) {
+    latch_.brake_now = latch_.brake_now || brake_now;  // a worse fault brakes at once; keep why
+    return;
+  }
+  ++counters_.latches;
+  latch_ = Latch{cause, brake_now, now, sentence, detail};
+}
+
+bool BaseDriverCore::permitFresh(double now) const {
+  return has_permit_ && now - permit_time_ < config_.permit_timeout;
+}
+
+void BaseDriverCore::spinOnce(double now, double wall_now) {
   rx_.clear();
   transport_.receive(rx_);
+  spin_wall_ = wall_now;
   for (const CanFrame& frame : rx_) processFrame(frame, now);
+  spin_wall_ = NAN;
   update(now, false);
+  last_spin_time_ = now;
+}
+
+void BaseDriverCore::checkWallLiveness(double now, double wall_now) {
+  if (!has_heartbeat_ || !std::isfinite(last_frame_wall_) || !isMoving(state_)) return;
+  const double silent = wall_now - last_frame_wall_;
+  if (silent <= config_.controller_wall_timeout) return;
+  latch(LatchCause::kControllerStalled, true, "the motor controller stopped answering",
+        format("no motor controller heartbeat for %.2f s of wall time while driving", silent), now);
+  update(now, true);
 }
 
 void BaseDriverCore::processFrame(const CanFrame& frame, double now) {
@@ -132,6 +265,15 @@ void BaseDriverCore::processFrame(const CanFrame& frame, double now) {
   const protocol::DecodeError error = protocol::decode(frame, &message);
   if (error != protocol::DecodeError::kNone) {
     ++counters_.decode_errors[static_cast<std::size_t>(error)];
+    // Our identifiers that do not decode: the command stream cannot be trusted. Other devices'
+    // identifiers are counted only.
+    if (isProtocolId(frame.id) && !frame.extended && isMoving(state_)) {
+      char id[16];
+      std::snprintf(id, sizeof(id), "0x%03X", static_cast<unsigned>(frame.id));
+      latch(LatchCause::kCorruptStream, false, "the motor commands were garbled",
+            std::string("undecodable ") + id + " frame (" + protocol::decodeErrorName(error) + ")",
+            now);
+    }
     return;
   }
   const double stamp = frame.stamp > 0 ? frame.stamp : now;
@@ -146,9 +288,15 @@ void BaseDriverCore::processFrame(const CanFrame& frame, double now) {
     }
     has_heartbeat_ = true;
     last_heartbeat_time_ = now;
+    if (std::isfinite(spin_wall_)) last_frame_wall_ = spin_wall_;
     mc_state_ = heartbeat->state;
   } else {
-    ++counters_.foreign_commands;  // our own message types, sent by someone else
+    // Our own message types, sent by someone else: another driver commands the motors.
+    ++counters_.foreign_commands;
+    latch(LatchCause::kForeignCommand, true, "another device is sending motor commands",
+          frame.id == protocol::kTorqueCommandId ? "a torque command frame of another sender"
+                                                 : "a driver heartbeat of another sender",
+          now);
   }
 }
 
@@ -166,40 +314,149 @@ void BaseDriverCore::handleEncoder(const protocol::EncoderCounts& counts, double
       break;
   }
   if (!odometry_.update(counts, stamp)) ++counters_.encoder_implausible;
+  const OdometryState& o = odometry_.state();
+  if (o.left_angle != last_left_angle_ || !std::isfinite(encoder_check_left_since_))
+    encoder_check_left_since_ = stamp;
+  if (o.right_angle != last_right_angle_ || !std::isfinite(encoder_check_right_since_))
+    encoder_check_right_since_ = stamp;
+  last_left_angle_ = o.left_angle;
+  last_right_angle_ = o.right_angle;
 }
 
-DriverState BaseDriverCore::evaluate(double now) {
+void BaseDriverCore::checkMotion(double now) {
+  if (!isMoving(state_)) {
+    // Not driving: a wheel standing still now says nothing about its encoder later.
+    encoder_check_left_since_ = encoder_check_right_since_ = overspeed_since_ = now;
+    return;
+  }
+  const OdometryState& o = odometry_.state();
+  // Over the limit for kOverspeedTime: one encoder interval can show a spike when frames come in
+  // a burst on a loaded PC (3.05 m/s seen in the one-switch system test at a true 0.7 m/s).
+  constexpr double kOverspeedTime = 0.1;  // [s]
+  if (std::abs(o.v) <= config_.max_speed) overspeed_since_ = now;
+  if (now - overspeed_since_ >= kOverspeedTime)
+    latch(LatchCause::kOverspeed, false, "the chair went faster than its limit",
+          format("%.2f m/s measured by the encoders", std::abs(o.v)) +
+              format(", limit %.2f m/s", config_.max_speed),
+          now);
+  if ((mc_faults_ & protocol::kReportOnlyFaults) != 0)
+    latch(LatchCause::kCorruptStream, false, "the motor commands were garbled",
+          "the motor controller reports bad command frames", now);
+  // Only while encoder frames arrive (a silent controller is another fault) and torque drives.
+  const double t = config_.encoder_check_time, rate = config_.encoder_check_rate;
+  const bool counting = now - o.stamp < kEncoderFresh && !message_brake_;
+  const bool left_frozen =
+      counting && now - encoder_check_left_since_ > t && std::abs(o.right_rate) > rate;
+  const bool right_frozen =
+      counting && now - encoder_check_right_since_ > t && std::abs(o.left_rate) > rate;
+  if (left_frozen || right_frozen)
+    latch(LatchCause::kEncoderFault, true, "a wheel sensor failed",
+          std::string(left_frozen ? "left" : "right") + " encoder did not count for " +
+              format("%.2f s while the other wheel turned", t),
+          now);
+}
+
+DriverState BaseDriverCore::evaluate(double now) const {
   if (estop_) return DriverState::kEstop;
+  const bool latched = latch_.cause != LatchCause::kNone;
+  // A controlled stop may run (the command path is intact) for stop_window, then the brake; a
+  // brake command ends it at once.
+  const auto stop_over = [&](double since) {
+    return sticky_brake_ || now - since >= config_.stop_window;
+  };
+  if (latched && (latch_.brake_now || stop_over(latch_.since))) return DriverState::kLatched;
   if (!has_heartbeat_) return DriverState::kNoController;
   if (now - last_heartbeat_time_ >= config_.controller_timeout) return DriverState::kControllerLost;
-  if (mc_faults_ != 0 || mc_state_ == ControllerState::kFault) return DriverState::kControllerFault;
+  if ((mc_faults_ & ~protocol::kReportOnlyFaults) != 0 || mc_state_ == ControllerState::kFault)
+    return DriverState::kControllerFault;
+  if (!permitFresh(now)) return DriverState::kNoPermit;
+  if (permit_stop_ && stop_over(permit_stop_since_)) return DriverState::kSupervisorStop;
   if (!has_message_ || last_message_time_ <= block_time_) return DriverState::kWaitingForCommand;
   if (now - last_message_time_ >= config_.command_timeout) return DriverState::kCommandTimeout;
+  if (latched || permit_stop_) {
+    if (message_brake_) return latched ? DriverState::kLatched : DriverState::kSupervisorStop;
+    return DriverState::kStopping;
+  }
   return message_brake_ ? DriverState::kBraking : DriverState::kDriving;
 }
 
-void BaseDriverCore::update(double now, bool force_send) {
-  const DriverState next = evaluate(now);
-  if (isFault(next)) block_time_ = now;
-  if (next != state_) {
-    if (next == DriverState::kCommandTimeout) ++counters_.command_timeouts;
-    if (next == DriverState::kControllerLost) ++counters_.heartbeat_losses;
-    if (next == DriverState::kControllerFault) ++counters_.controller_faults;
-    force_send = true;  // a change of state goes on the bus at once
+std::string BaseDriverCore::sentence() const {
+  if (estop_) return "the emergency stop is engaged";
+  if (latch_.cause != LatchCause::kNone) return latch_.sentence;
+  switch (state_) {
+    case DriverState::kNoController:
+    case DriverState::kControllerLost:
+      return "the motor controller is not answering";
+    case DriverState::kControllerFault:
+      return faultSentence(mc_faults_);
+    case DriverState::kNoPermit:
+      return "the safety supervisor is not running";
+    default:
+      return "";
   }
-  state_ = next;
-  if (dueOnGrid(now, config_.command_period, force_send, next_command_due_)) sendCommand();
-  if (dueOnGrid(now, config_.heartbeat_period, false, next_heartbeat_due_)) sendHeartbeat();
 }
 
-void BaseDriverCore::sendCommand() {
-  const bool drive = state_ == DriverState::kDriving;
+void BaseDriverCore::update(double now, bool force_send) {
+  checkMotion(now);
+  const DriverState raw = evaluate(now);
+  DriverState next = raw;
+  if (raw != state_) {
+    // A fault or a silent controller while the torques reached the motors ends the drive: after
+    // a hang, a silence or a fault the chair never resumes on its own.
+    const bool interrupted = isMoving(state_) && !estop_ && latch_.cause == LatchCause::kNone &&
+                             (isFault(raw) || raw == DriverState::kCommandTimeout);
+    if (interrupted) {
+      // The driver itself did not run (the chair process stood still): that is why.
+      const bool paused = now - last_spin_time_ > config_.command_timeout;
+      const std::string why =
+          paused                                 ? "the chair's computer paused"
+          : raw == DriverState::kCommandTimeout  ? "the chair's controller stopped sending commands"
+          : raw == DriverState::kNoPermit        ? "the safety supervisor is not running"
+          : raw == DriverState::kControllerFault ? faultSentence(mc_faults_)
+                                                 : "the motor controller stopped answering";
+      std::string detail = std::string(driverStateName(raw)) + " while driving";
+      if (paused) detail += format(" (the driver did not run for %.2f s)", now - last_spin_time_);
+      if (raw == DriverState::kControllerFault)
+        detail += " (" + protocol::describeFaults(mc_faults_) + ")";
+      latch(LatchCause::kInterrupted, true, why, detail, now);
+      next = evaluate(now);
+    }
+    if (raw == DriverState::kCommandTimeout) ++counters_.command_timeouts;
+    if (raw == DriverState::kControllerLost) ++counters_.heartbeat_losses;
+    if (raw == DriverState::kControllerFault) ++counters_.controller_faults;
+    if (raw == DriverState::kNoPermit && has_permit_) ++counters_.permit_losses;
+  }
+  if (next != state_) force_send = true;  // a change of state goes on the bus at once
+  // Crossing the speed limit goes on the bus at once too (the torque that speeds up is cut).
+  const bool at_limit = isMoving(next) && std::abs(odometry_.state().v) >= config_.max_speed;
+  if (at_limit != at_speed_limit_) force_send = true;
+  at_speed_limit_ = at_limit;
+  if (isFault(next)) block_time_ = now;
+  state_ = next;
+  if (dueOnGrid(now, config_.command_period, force_send, next_command_due_)) sendCommand(now);
+  if (dueOnGrid(now, config_.heartbeat_period, false, next_heartbeat_due_)) sendHeartbeat();
+  noteEvent(now);
+}
+
+void BaseDriverCore::sendCommand(double now) {
+  const bool drive = isMoving(state_);
   protocol::TorqueCommand command;
   command.left = drive ? message_left_ : 0.0;
   command.right = drive ? message_right_ : 0.0;
+  const double v = odometry_.state().v;
+  if (drive && std::abs(v) >= config_.max_speed) {
+    // At the speed limit no wheel may push the chair faster.
+    const auto cut = [v](double t) { return v > 0 ? std::min(t, 0.0) : std::max(t, 0.0); };
+    command.left = cut(command.left);
+    command.right = cut(command.right);
+    ++counters_.speed_limited;
+  }
   command.enable = drive;
   command.brake = !drive;
   command.sequence = command_sequence_++;
+  // A drive frame carries the time its command was decided (the MC refuses it when older than
+  // its watchdog); a brake frame is decided now.
+  command.time_tag = protocol::timeTag(drive ? message_stamp_ : now);
   last_sent_ = command;
   if (transport_.send(protocol::encode(command))) {
     ++counters_.frames_sent;
@@ -211,7 +468,7 @@ void BaseDriverCore::sendCommand() {
 void BaseDriverCore::sendHeartbeat() {
   using protocol::DriverHeartbeatState;
   protocol::DriverHeartbeat heartbeat;
-  heartbeat.state = state_ == DriverState::kDriving ? DriverHeartbeatState::kDriving
+  heartbeat.state = isMoving(state_)                ? DriverHeartbeatState::kDriving
                     : state_ == DriverState::kEstop ? DriverHeartbeatState::kEstop
                     : isFault(state_)               ? DriverHeartbeatState::kFault
                                                     : DriverHeartbeatState::kBraking;
@@ -221,6 +478,31 @@ void BaseDriverCore::sendHeartbeat() {
   } else {
     ++counters_.send_failures;
   }
+}
+
+void BaseDriverCore::noteEvent(double now) {
+  DriverEvent e;
+  e.stamp = now;
+  e.fault = isFault(state_);
+  e.latched = estop_ || latch_.cause != LatchCause::kNone;
+  e.sentence = sentence();
+  if (e.fault == last_event_.fault && e.latched == last_event_.latched &&
+      e.sentence == last_event_.sentence)
+    return;
+  e.detail = std::string(driverStateName(state_));
+  if (latch_.cause != LatchCause::kNone)
+    e.detail += std::string(": ") + latchCauseName(latch_.cause) + ": " + latch_.detail;
+  else if (state_ == DriverState::kControllerFault)
+    e.detail += ": " + protocol::describeFaults(mc_faults_);
+  last_event_ = e;
+  event_ = e;
+  event_pending_ = true;
+}
+
+std::optional<DriverEvent> BaseDriverCore::takeEvent() {
+  if (!event_pending_) return std::nullopt;
+  event_pending_ = false;
+  return event_;
 }
 
 }  // namespace wheelchair_base_driver

@@ -11,6 +11,7 @@
 #include <pluginlib/class_list_macros.hpp>
 
 #include <cmath>
+#include <optional>
 
 namespace wheelchair_base_driver {
 
@@ -19,10 +20,13 @@ namespace protocol = wheelchair_can::protocol;
 
 namespace {
 double rosNow() { return ros::Time::now().toSec(); }
+double wallNow() { return ros::WallTime::now().toSec(); }
 }  // namespace
 
 BaseDriverNodelet::~BaseDriverNodelet() {
+  registration_.reset();  // no command or permit reaches the driver any more
   timer_.stop();
+  wall_timer_.stop();
   std::lock_guard<std::mutex> lock(mutex_);
   if (core_) core_->engageEstop(rosNow());  // leave the chair braked
 }
@@ -34,12 +38,33 @@ BaseDriverSettings BaseDriverNodelet::loadSettings() {
   defaults.driver.geometry.wheel_radius = chair.wheel_radius;
   defaults.driver.geometry.half_track = chair.half_track;
   defaults.driver.max_torque = chair.max_wheel_torque;
+  defaults.driver.max_speed = chair.max_speed;
   return wheelchair_ros::loadParameters(pnh, readBaseDriverSettings, defaults);
 }
 
 void BaseDriverNodelet::onInit() {
   ros::NodeHandle& nh = getNodeHandle();
   ros::NodeHandle& pnh = getPrivateNodeHandle();
+  // The chair's controller and supervisor reach the driver only through the drive channel of
+  // this process; a second driver in the process is refused (before anything is set up).
+  channel_ = wheelchair_ros::driveChannel();
+  try {
+    registration_ = channel_->attachDriver(
+        {[this](const wheelchair_ros::DriveCommand& c) { return onCommand(c); },
+         [this](const wheelchair_ros::DrivePermit& p) {
+           std::lock_guard<std::mutex> lock(mutex_);
+           if (core_) core_->onPermit(p.sequence, p.session, p.stamp, p.stop, rosNow());
+         },
+         [this](const wheelchair_ros::RiderRelease& r) {
+           std::lock_guard<std::mutex> lock(mutex_);
+           if (!core_) return;
+           if (core_->estopLatched() || core_->latchCause() != LatchCause::kNone)
+             NODELET_WARN("base driver: stop released by the rider (%s)", r.source.c_str());
+           core_->riderRelease(rosNow());
+         }});
+  } catch (const std::logic_error& e) {
+    throw wheelchair_core::ConfigError(getName() + ": " + e.what());
+  }
   settings_ = loadSettings();
   const DriverConfig& config = settings_.driver;
 
@@ -70,10 +95,13 @@ void BaseDriverNodelet::onInit() {
   clear_srv_ = pnh.advertiseService("clear_estop", &BaseDriverNodelet::onClearEstopService, this);
   timer_ =
       nh.createTimer(ros::Duration(1.0 / settings_.spin_rate), &BaseDriverNodelet::onTimer, this);
-  NODELET_INFO("base driver on %s: r=%.3f m, b=%.3f m, max torque %.1f N m, watchdogs %.0f/%.0f ms",
-               transport_->describe().c_str(), config.geometry.wheel_radius,
-               config.geometry.half_track, config.max_torque, config.command_timeout * 1e3,
-               config.controller_timeout * 1e3);
+  wall_timer_ = nh.createWallTimer(ros::WallDuration(0.05), &BaseDriverNodelet::onWallTimer, this);
+  NODELET_INFO(
+      "base driver on %s: r=%.3f m, b=%.3f m, max torque %.1f N m, max speed %.2f m/s, "
+      "watchdogs %.0f/%.0f/%.0f ms (commands/controller/permits)",
+      transport_->describe().c_str(), config.geometry.wheel_radius, config.geometry.half_track,
+      config.max_torque, config.max_speed, config.command_timeout * 1e3,
+      config.controller_timeout * 1e3, config.permit_timeout * 1e3);
 }
 
 void BaseDriverNodelet::startEmulatedController() {
@@ -89,14 +117,29 @@ void BaseDriverNodelet::startEmulatedController() {
   NODELET_INFO("fake transport with an emulated motor controller and a trivial wheel plant");
 }
 
-void BaseDriverNodelet::onTorques(const wheelchair_msgs::WheelTorques::ConstPtr& msg) {
+bool BaseDriverNodelet::onCommand(const wheelchair_ros::DriveCommand& c) {
   std::lock_guard<std::mutex> lock(mutex_);
-  const TorqueVerdict verdict = core_->onTorqueMessage(msg->left, msg->right, msg->brake,
-                                                       msg->header.stamp.toSec(), rosNow());
+  if (!core_) return false;
+  const TorqueVerdict verdict =
+      core_->onCommand({c.left, c.right, c.brake, c.stamp, c.sequence, c.session}, rosNow());
   if (verdict != TorqueVerdict::kAccepted) {
-    NODELET_WARN_THROTTLE(1.0, "wheel torques rejected (%s): left %g right %g; braking",
-                          torqueVerdictName(verdict), msg->left, msg->right);
+    NODELET_WARN_THROTTLE(1.0, "command rejected (%s): left %g right %g; braking",
+                          torqueVerdictName(verdict), c.left, c.right);
   }
+  return verdict == TorqueVerdict::kAccepted;
+}
+
+void BaseDriverNodelet::onTorques(
+    const ros::MessageEvent<wheelchair_msgs::WheelTorques const>& event) {
+  const std::string& publisher = event.getPublisherName();
+  if (publisher == ros::this_node::getName()) return;  // this process: the controller's log copy
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (core_->latchCause() != LatchCause::kForeignCommand)
+    NODELET_ERROR(
+        "wheel torques from %s: braked and latched (only the chair's controller "
+        "commands the motors)",
+        publisher.c_str());
+  core_->onForeignCommand(publisher, rosNow());
 }
 
 void BaseDriverNodelet::onEstopTopic(const std_msgs::Bool::ConstPtr& msg) {
@@ -105,7 +148,7 @@ void BaseDriverNodelet::onEstopTopic(const std_msgs::Bool::ConstPtr& msg) {
     if (!core_->estopLatched()) NODELET_ERROR("emergency stop engaged (topic)");
     core_->engageEstop(rosNow());
   } else if (core_->estopLatched()) {
-    NODELET_WARN_THROTTLE(1.0, "estop=false ignored: the e-stop latches; call ~clear_estop");
+    NODELET_WARN_THROTTLE(1.0, "estop=false ignored: only the rider's command releases the stop");
   }
 }
 
@@ -115,21 +158,50 @@ bool BaseDriverNodelet::onEstopService(std_srvs::Trigger::Request&,
   core_->engageEstop(rosNow());
   NODELET_ERROR("emergency stop engaged (service)");
   res.success = true;
-  res.message = "e-stop latched; call clear_estop to release";
+  res.message = "e-stop latched; only the rider's command releases it";
   return true;
 }
 
+/// Any node could call it and drive the chair on: the rider's own command (the HMI, through the
+/// drive channel) is the only release.
 bool BaseDriverNodelet::onClearEstopService(std_srvs::Trigger::Request&,
                                             std_srvs::Trigger::Response& res) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  core_->clearEstop(rosNow());
-  NODELET_WARN("emergency stop cleared; motion resumes with the next torque message");
-  res.success = true;
-  res.message = "e-stop cleared";
+  NODELET_WARN("clear_estop called: refused, only the rider can release the stop");
+  res.success = false;
+  res.message = "refused: only the rider can release the stop";
   return true;
+}
+
+void BaseDriverNodelet::onWallTimer(const ros::WallTimerEvent&) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    core_->checkWallLiveness(rosNow(), wallNow());
+  }
+  reportEvents();
+}
+
+void BaseDriverNodelet::reportEvents() {
+  std::lock_guard<std::mutex> order(report_mutex_);
+  std::optional<DriverEvent> event;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    event = core_->takeEvent();
+  }
+  if (!event) return;
+  if (event->latched)
+    NODELET_ERROR("base driver: STOP latched: %s (%s)", event->sentence.c_str(),
+                  event->detail.c_str());
+  wheelchair_ros::DriverReport report;
+  report.stamp = event->stamp;
+  report.fault = event->fault;
+  report.latched = event->latched;
+  report.sentence = event->sentence;
+  report.detail = event->detail;
+  channel_->report(report);
 }
 
 void BaseDriverNodelet::onTimer(const ros::TimerEvent&) {
+  reportEvents();  // what the channel's calls changed since the last tick
   std::lock_guard<std::mutex> lock(mutex_);
   const double now = rosNow();
   if (emulated_controller_) {
@@ -138,7 +210,7 @@ void BaseDriverNodelet::onTimer(const ros::TimerEvent&) {
       emulated_plant_->advance(now - last_plant_time_);
     last_plant_time_ = now;
   }
-  core_->spinOnce(now);
+  core_->spinOnce(now, wallNow());
   const DriverState state = core_->state();
   if (state != last_logged_state_) {
     if (isFault(state)) {
@@ -224,7 +296,10 @@ void BaseDriverNodelet::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s)
     s.summary(diagnostic_msgs::DiagnosticStatus::OK, driverStateName(state));
   }
   s.add("state", driverStateName(state));
+  s.add("sentence", core_->sentence());
   s.add("estop latched", core_->estopLatched());
+  s.add("latched stop", latchCauseName(core_->latchCause()));
+  s.add("latched stop detail", core_->latchDetail());
   s.add("braking", core_->lastCommand().brake);
   s.add("commanded left [N m]", core_->lastCommand().left);
   s.add("commanded right [N m]", core_->lastCommand().right);
@@ -249,6 +324,12 @@ void BaseDriverNodelet::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s)
   s.add("encoder frames lost", n.encoder_lost);
   s.add("encoder frames duplicated/reordered", n.encoder_duplicated + n.encoder_reordered);
   s.add("foreign commands on the bus", n.foreign_commands);
+  s.add("foreign torque publishers", n.foreign_publishers);
+  s.add("permits", n.permits);
+  s.add("permits refused", n.permits_refused);
+  s.add("permit losses", n.permit_losses);
+  s.add("latched stops", n.latches);
+  s.add("speed limited", n.speed_limited);
 }
 
 }  // namespace wheelchair_base_driver

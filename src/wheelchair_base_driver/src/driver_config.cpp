@@ -17,6 +17,12 @@ std::string DriverConfig::validate() const {
       .positive("heartbeat_period", heartbeat_period)
       .positive("command_timeout", command_timeout)
       .positive("controller_timeout", controller_timeout)
+      .positive("max_speed", max_speed)
+      .positive("permit_timeout", permit_timeout)
+      .positive("stop_window", stop_window)
+      .positive("controller_wall_timeout", controller_wall_timeout)
+      .positive("encoder_check_time", encoder_check_time)
+      .positive("encoder_check_rate", encoder_check_rate)
       .result();
 }
 
@@ -24,11 +30,17 @@ void readDriverConfig(wheelchair_core::ConfigReader& reader, DriverConfig& confi
   reader.read("counts_per_rev", config.geometry.counts_per_rev);
   reader.read("max_wheel_rate", config.geometry.max_wheel_rate);
   reader.read("max_torque", config.max_torque);
+  reader.read("max_speed", config.max_speed);
   double command_rate = 1.0 / config.command_period;
   reader.read("command_rate", command_rate);
   config.command_period = 1.0 / command_rate;
   reader.read("command_timeout", config.command_timeout);
   reader.read("controller_timeout", config.controller_timeout);
+  reader.read("permit_timeout", config.permit_timeout);
+  reader.read("stop_window", config.stop_window);
+  reader.read("controller_wall_timeout", config.controller_wall_timeout);
+  reader.read("encoder_check_time", config.encoder_check_time);
+  reader.read("encoder_check_rate", config.encoder_check_rate);
 }
 
 }  // namespace wheelchair_base_driver

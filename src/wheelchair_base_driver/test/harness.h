@@ -28,6 +28,7 @@ inline DriverConfig testDriverConfig() {
   c.geometry.counts_per_rev = 4096;
   c.geometry.max_wheel_rate = 40;
   c.max_torque = 40;
+  c.max_speed = 1.5;
   return c;
 }
 
@@ -41,22 +42,36 @@ struct Harness {
         driver(testDriverConfig(), *driver_port),
         controller(EmulatedControllerConfig{}, *motor_port, plant) {}
 
-  /// Advances time by `duration` in steps of `dt`, calling `each` (if any) before each step.
+  /// Advances time by `duration` in steps of `dt`, calling `each` (if any) before each step;
+  /// while `supervised`, a permit every 20 ms (the supervisor's check rate), with `stop`.
   void run(double duration, double dt = 0.001, const std::function<void()>& each = {}) {
     const int steps = static_cast<int>(std::lround(duration / dt));
     for (int i = 0; i < steps; ++i) {
       now += dt;
+      if (supervised && now >= next_permit - 1e-9) {
+        permit();
+        next_permit = now + 0.02;
+      }
       if (each) each();
       controller.step(now);
       plant.advance(dt);
-      driver.spinOnce(now);
+      driver.spinOnce(now, now);
     }
   }
-  void torque(double left, double right, bool brake = false) {
-    driver.onTorqueMessage(left, right, brake, 0.0, now);
+  /// The supervisor's permit, now.
+  void permit() {
+    driver.onPermit(++permit_sequence, 1, now, stop, now);
+    last_permit_time = now;
+  }
+  /// A command of the chair's controller, decided now (or `age` seconds ago).
+  TorqueVerdict torque(double left, double right, bool brake = false, double age = 0.0) {
+    return driver.onCommand({left, right, brake, now - age, ++command_sequence, 1}, now);
   }
 
   double now = 0.0;
+  bool supervised = true, stop = false;
+  double next_permit = 0.0, last_permit_time = -1.0;
+  std::uint64_t permit_sequence = 0, command_sequence = 0;
   std::shared_ptr<FakeBus> bus;
   std::shared_ptr<FakeBusEndpoint> driver_port, motor_port, monitor;
   SimpleWheelPlant plant;

@@ -27,9 +27,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   DriverConfig config;
   config.geometry = {0.17, 0.275, 4096, 40};
   config.max_torque = 50;
+  config.max_speed = 1.5;
   BaseDriverCore driver(config, *port);
-  double now = 0;
-  driver.onTorqueMessage(3.0, -2.0, false, 0, now);
+  double now = 0.001;
+  std::uint64_t sequence = 0;
+  driver.onCommand({3.0, -2.0, false, now, ++sequence, 1}, now);
   for (std::size_t i = 0; i + 13 <= size; i += 13) {
     const std::uint8_t* p = data + i;
     CanFrame f;
@@ -43,7 +45,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     protocol::Message m;
     protocol::decode(f, &m);
     driver.processFrame(f, now);
-    if (p[12] & 1) driver.onTorqueMessage(3.0, -2.0, false, 0, now);
+    if (p[12] & 1) driver.onCommand({3.0, -2.0, false, now, ++sequence, 1}, now);
     driver.spinOnce(now);
     const protocol::TorqueCommand& c = driver.lastCommand();
     // Only the commanded torques or a brake may ever be sent.

@@ -1,13 +1,18 @@
-// System tests of the driver node over the UDP transport: this node plays the chair — it owns
-// sim time (/clock), an EmulatedMotorController and a trivial wheel plant — and talks to the
-// driver through the protocol. One .test file per behaviour selects one test with --gtest_filter.
+// System tests of the driver nodelet over the UDP transport: this process plays the chair — it
+// owns sim time (/clock), an EmulatedMotorController and a trivial wheel plant — talks to the
+// driver through the protocol, and loads the driver nodelet itself, so that it can command it as
+// the chair's controller and the safety supervisor do: through the process's drive channel
+// (torque commands, permits every 20 ms, the rider's release). One .test file per behaviour
+// selects one test with --gtest_filter; foreign_publisher.test adds a rostopic publisher.
 #include <wheelchair_can/emulated_motor_controller.h>
 #include <wheelchair_can/simple_wheel_plant.h>
 #include <wheelchair_can/udp_transport.h>
+#include <wheelchair_ros/drive_channel.h>
 
 #include <diagnostic_msgs/DiagnosticStatus.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
+#include <nodelet/loader.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/JointState.h>
@@ -55,6 +60,7 @@ class EmulatedChair {
     thread_.join();
   }
   double now() const { return now_.load(); }
+  void setSupervised(bool supervised) { supervised_ = supervised; }
   template <typename F>
   auto with(F f) {  // runs f(controller, plant) under the loop's lock
     std::lock_guard<std::mutex> lock(mutex_);
@@ -82,11 +88,22 @@ class EmulatedChair {
         controller_->step(now_);
         plant_.advance(kStep);
       }
+      // The supervisor: a permit every 20 ms of sim time, while it is "loaded".
+      if (supervised_ && now_ >= next_permit_) {
+        next_permit_ = now_ + 0.02;
+        wheelchair_ros::DrivePermit permit;
+        permit.sequence = ++permit_sequence_;
+        permit.stamp = now_;
+        channel_->grant(permit);
+      }
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
   }
   std::atomic<double> now_{1.0};
-  std::atomic<bool> running_{true};
+  std::atomic<bool> running_{true}, supervised_{true};
+  double next_permit_ = 0.0;
+  std::uint64_t permit_sequence_ = 0;
+  std::shared_ptr<wheelchair_ros::DriveChannel> channel_ = wheelchair_ros::driveChannel();
   std::mutex mutex_;
   ros::Publisher clock_pub_;
   SimpleWheelPlant plant_;
@@ -97,7 +114,6 @@ class EmulatedChair {
 
 struct DriverNodeTest : ::testing::Test {
   void SetUp() override {
-    torque_pub = nh.advertise<wheelchair_msgs::WheelTorques>("/wheel_torques", 10);
     estop_pub = nh.advertise<std_msgs::Bool>("/estop", 10, true);
     status_sub = nh.subscribe<diagnostic_msgs::DiagnosticStatus>(
         "/base_driver/status", 10, [this](const diagnostic_msgs::DiagnosticStatus::ConstPtr& m) {
@@ -130,14 +146,19 @@ struct DriverNodeTest : ::testing::Test {
     }
     return "";
   }
+  /// A command of the chair's controller, through the drive channel.
   void publish(double left, double right) {
-    wheelchair_msgs::WheelTorques msg;
-    msg.header.stamp = ros::Time(chair->now());
-    msg.left = left;
-    msg.right = right;
-    torque_pub.publish(msg);
+    wheelchair_ros::DriveCommand command;
+    command.left = left;
+    command.right = right;
+    command.brake = false;
+    command.stamp = chair->now();
+    command.sequence = ++sequence;
+    wheelchair_ros::driveChannel()->submit(command);
     last_publish = chair->now();
   }
+  /// The rider's command to go on (what the HMI relays).
+  void riderRelease() { wheelchair_ros::driveChannel()->releaseByRider({chair->now(), "test"}); }
   /// Publishes (left, right) at 50 Hz for `duration` sim seconds.
   void drive(double duration, double left, double right) {
     const double end = chair->now() + duration;
@@ -155,7 +176,7 @@ struct DriverNodeTest : ::testing::Test {
   }
 
   ros::NodeHandle nh;
-  ros::Publisher torque_pub, estop_pub;
+  ros::Publisher estop_pub;
   ros::Subscriber status_sub, odom_sub, joints_sub;
   std::mutex mutex;
   diagnostic_msgs::DiagnosticStatus status;
@@ -163,6 +184,7 @@ struct DriverNodeTest : ::testing::Test {
   sensor_msgs::JointState joints;
   std::unique_ptr<EmulatedChair> chair;
   double last_publish = 0;
+  std::uint64_t sequence = 0;
 };
 
 TEST_F(DriverNodeTest, TorquesReachTheMotorsWithScaleAndSign) {
@@ -202,8 +224,10 @@ TEST_F(DriverNodeTest, CommandSilenceBrakesWithin100ms) {
   std::cerr << "brake " << (braked_at - silent_since) * 1e3 << " ms (sim) after the last message\n";
   EXPECT_GE(braked_at - silent_since, 0.1 - 1e-6);
   EXPECT_LE(braked_at - silent_since, 0.1 + 0.02);
-  chair->waitUntil([this] { return statusMessage() == "command_timeout"; }, 0.5);
-  EXPECT_EQ(statusMessage(), "command_timeout");
+  // A silence while driving ends the drive: latched until the rider's command.
+  chair->waitUntil([this] { return statusMessage() == "latched_stop"; }, 0.5);
+  EXPECT_EQ(statusMessage(), "latched_stop");
+  EXPECT_EQ(statusValue("sentence"), "the chair's controller stopped sending commands");
 }
 
 TEST_F(DriverNodeTest, HeartbeatLossFaults) {
@@ -218,7 +242,7 @@ TEST_F(DriverNodeTest, HeartbeatLossFaults) {
       publish(5.0, 5.0);
       next += 0.02;
     }
-    if (statusMessage() == "motor_controller_heartbeat_lost") fault_at = chair->now();
+    if (statusMessage() == "latched_stop") fault_at = chair->now();  // lost while driving
     ros::WallDuration(0.0005).sleep();
   }
   ASSERT_GT(fault_at, 0) << statusMessage();
@@ -231,10 +255,13 @@ TEST_F(DriverNodeTest, HeartbeatLossFaults) {
     std::lock_guard<std::mutex> lock(mutex);
     EXPECT_EQ(status.level, diagnostic_msgs::DiagnosticStatus::ERROR);
   }
+  EXPECT_EQ(statusValue("sentence"), "the motor controller stopped answering");
   EXPECT_GT(chair->waitUntil([this] { return braked(); }, 0.05), 0);
 }
 
-TEST_F(DriverNodeTest, EstopLatchesUntilCleared) {
+// The issue: any node could clear the e-stop (~clear_estop) and the chair drove again. The
+// service now refuses; the topic cannot release it either; the rider's command does.
+TEST_F(DriverNodeTest, EstopLatchesUntilTheRidersRelease) {
   drive(0.3, 8.0, 8.0);
   ASSERT_FALSE(braked());
   std_msgs::Bool on;
@@ -251,13 +278,67 @@ TEST_F(DriverNodeTest, EstopLatchesUntilCleared) {
   EXPECT_EQ(statusMessage(), "estop");
   std_srvs::Trigger clear;
   ASSERT_TRUE(ros::service::call("/base_driver/clear_estop", clear));
-  EXPECT_TRUE(clear.response.success);
+  EXPECT_FALSE(clear.response.success);
+  EXPECT_EQ(clear.response.message, "refused: only the rider can release the stop");
+  drive(0.3, 8.0, 8.0);
+  EXPECT_TRUE(braked()) << "the chair drove on after another node's clear_estop";
+  EXPECT_EQ(statusMessage(), "estop");
+  riderRelease();
   drive(0.2, 8.0, 8.0);
   EXPECT_FALSE(braked());
   std_srvs::Trigger stop;
   ASSERT_TRUE(ros::service::call("/base_driver/estop", stop));
   drive(0.1, 8.0, 8.0);
   EXPECT_TRUE(braked());
+}
+
+// The issue: a second node publishing 20 N m at 500 Hz on /wheel_torques pushed the idle chair
+// to 1.84 m/s. The driver takes no command from the topic: a foreign publisher (rostopic, in
+// foreign_publisher.test) is braked on and latched with the reason until the rider's release.
+TEST_F(DriverNodeTest, AForeignTorquePublisherIsBrakedOnAndLatched) {
+  const double start = chair->with(
+      [](EmulatedMotorController&, SimpleWheelPlant& p) { return p.wheelAngles().left; });
+  ASSERT_GT(chair->waitUntil([this] { return statusMessage() == "latched_stop"; }, 20.0), 0)
+      << "the foreign publisher was not noticed: " << statusMessage();
+  EXPECT_EQ(statusValue("sentence"), "another program tried to drive the chair");
+  EXPECT_NE(statusValue("latched stop detail").find("/intruder"), std::string::npos)
+      << statusValue("latched stop detail");
+  drive(1.0, 8.0, 8.0);  // not even the chair's own controller moves it now
+  const double end = chair->with(
+      [](EmulatedMotorController&, SimpleWheelPlant& p) { return p.wheelAngles().left; });
+  EXPECT_LT(std::abs(end - start), 1e-6) << "the wheels turned";
+  EXPECT_TRUE(braked());
+}
+
+// The issue: unloading the supervisor went unnoticed. Without fresh permits the driver brakes
+// within the permit timeout (100 ms) and the drive ends, latched, until the rider's release.
+TEST_F(DriverNodeTest, NoPermitsBrakeWithinThePermitTimeout) {
+  drive(0.5, 8.0, 8.0);
+  ASSERT_FALSE(braked());
+  chair->setSupervised(false);
+  const double since = chair->now();
+  double braked_at = -1;
+  const double end = chair->now() + 1.0;
+  double next = chair->now();
+  while (chair->now() < end && braked_at < 0) {  // the controller keeps commanding
+    if (chair->now() >= next) {
+      publish(8.0, 8.0);
+      next += 0.02;
+    }
+    if (braked()) braked_at = chair->now();
+    ros::WallDuration(0.0005).sleep();
+  }
+  ASSERT_GT(braked_at, 0);
+  std::cerr << "brake " << (braked_at - since) * 1e3 << " ms (sim) after the last permit\n";
+  EXPECT_LE(braked_at - since, 0.1 + 0.02 + 0.005);
+  chair->waitUntil([this] { return statusMessage() == "latched_stop"; }, 0.5);
+  EXPECT_EQ(statusValue("sentence"), "the safety supervisor is not running");
+  chair->setSupervised(true);
+  drive(0.3, 8.0, 8.0);
+  EXPECT_TRUE(braked()) << "the supervisor back does not restart the drive: the rider does";
+  riderRelease();
+  drive(0.2, 8.0, 8.0);
+  EXPECT_FALSE(braked());
 }
 
 TEST_F(DriverNodeTest, NanTorquesAreRejected) {
@@ -282,5 +363,14 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "base_driver_rostest");
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  return RUN_ALL_TESTS();
+  // The driver in this process (its private parameters are the .test file's /base_driver/...),
+  // reachable through the drive channel as in the chair process.
+  nodelet::Loader loader(false);
+  if (!loader.load("/base_driver", "wheelchair_base_driver/BaseDriverNodelet", {}, {})) {
+    std::cerr << "the base driver nodelet did not load\n";
+    return 1;
+  }
+  const int result = RUN_ALL_TESTS();
+  loader.unload("/base_driver");
+  return result;
 }

@@ -60,7 +60,9 @@ TEST_F(DriverTest, StartsBrakedAndWaitsForController) {
   fresh.driver.spinOnce(0.0);
   EXPECT_EQ(fresh.driver.state(), DriverState::kNoController);
   EXPECT_TRUE(fresh.driver.lastCommand().brake);
-  fresh.driver.onTorqueMessage(5, 5, false, 0, 0.001);
+  fresh.now = 0.001;
+  fresh.permit();
+  fresh.torque(5, 5);
   EXPECT_TRUE(fresh.driver.lastCommand().brake);  // no controller: no torque
 }
 
@@ -132,7 +134,7 @@ TEST_F(DriverTest, HeartbeatLossFaultsAndBrakes) {
       h.torque(4.0, 4.0);
       next += 0.02;
     }
-    if (lost_at < 0 && h.driver.state() == DriverState::kControllerLost) lost_at = h.now;
+    if (lost_at < 0 && isFault(h.driver.state())) lost_at = h.now;
   });
   log.drain(*h.monitor);
   double last_heartbeat = -1;
@@ -142,15 +144,23 @@ TEST_F(DriverTest, HeartbeatLossFaultsAndBrakes) {
   ASSERT_GT(lost_at, 0);
   EXPECT_GE(lost_at - last_heartbeat, 0.2 - 1e-9);
   EXPECT_LE(lost_at - last_heartbeat, 0.2 + 0.0002);
-  EXPECT_EQ(h.driver.state(), DriverState::kControllerLost);
+  EXPECT_EQ(h.driver.state(), DriverState::kLatched) << "lost while driving: the drive ends";
+  EXPECT_EQ(h.driver.latchCause(), LatchCause::kInterrupted);
+  EXPECT_EQ(h.driver.sentence(), "the motor controller stopped answering");
   EXPECT_TRUE(isFault(h.driver.state()));
   EXPECT_TRUE(h.driver.lastCommand().brake);
   EXPECT_TRUE(h.plant.braked());  // the controller still hears the brake command
   EXPECT_EQ(h.driver.counters().heartbeat_losses, 1u);
-  // Heartbeats return: the driver needs a torque message newer than the fault to drive again.
+  // Heartbeats return: commands alone do not move the chair again, only the rider's release
+  // and then a command newer than it.
   h.controller.setSilent(false);
   h.run(0.06);
+  driveFor(0.1, 4.0, 4.0);
+  EXPECT_EQ(h.driver.state(), DriverState::kLatched);
+  EXPECT_TRUE(h.plant.braked());
+  h.driver.riderRelease(h.now);
   EXPECT_EQ(h.driver.state(), DriverState::kWaitingForCommand);
+  h.run(0.001);
   h.torque(4.0, 4.0);
   EXPECT_EQ(h.driver.state(), DriverState::kDriving);
 }
@@ -167,7 +177,7 @@ TEST_F(DriverTest, EstopLatchesUntilClearedAndNeedsAFreshCommand) {
   for (const auto& [stamp, c] : log.commands) EXPECT_TRUE(c.brake) << stamp;
   EXPECT_TRUE(h.plant.braked());
   EXPECT_TRUE(h.driver.estopLatched());
-  h.driver.clearEstop(h.now);
+  h.driver.riderRelease(h.now);  // only the rider's release (the e-stop clear service refuses)
   EXPECT_EQ(h.driver.state(), DriverState::kWaitingForCommand);  // the last message is old
   h.run(0.005);
   EXPECT_TRUE(h.plant.braked());
@@ -181,15 +191,17 @@ TEST_F(DriverTest, InvalidTorquesAreRejectedCountedAndBrake) {
   const struct {
     double left, right, stamp_age;
     TorqueVerdict verdict;
-  } kCases[] = {
-      {std::nan(""), 1, -1, TorqueVerdict::kNonFinite}, {1, inf, -1, TorqueVerdict::kNonFinite},
-      {-inf, 1, -1, TorqueVerdict::kNonFinite},         {40.01, 0, -1, TorqueVerdict::kOutOfRange},
-      {0, -41, -1, TorqueVerdict::kOutOfRange},         {1, 1, 0.1, TorqueVerdict::kStale}};
+  } kCases[] = {{std::nan(""), 1, 0, TorqueVerdict::kNonFinite},
+                {1, inf, 0, TorqueVerdict::kNonFinite},
+                {-inf, 1, 0, TorqueVerdict::kNonFinite},
+                {40.01, 0, 0, TorqueVerdict::kOutOfRange},
+                {0, -41, 0, TorqueVerdict::kOutOfRange},
+                {1, 1, 0.1, TorqueVerdict::kStale},
+                {1, 1, -0.02, TorqueVerdict::kFuture}};
   for (const auto& c : kCases) {
     h.torque(2.0, 2.0);
     ASSERT_EQ(h.driver.state(), DriverState::kDriving);
-    const double stamp = c.stamp_age < 0 ? 0.0 : h.now - c.stamp_age;
-    EXPECT_EQ(h.driver.onTorqueMessage(c.left, c.right, false, stamp, h.now), c.verdict);
+    EXPECT_EQ(h.torque(c.left, c.right, false, c.stamp_age), c.verdict);
     EXPECT_EQ(h.driver.state(), DriverState::kWaitingForCommand);
     EXPECT_TRUE(h.driver.lastCommand().brake);
     EXPECT_EQ(h.driver.lastCommand().left, 0.0);
@@ -199,9 +211,26 @@ TEST_F(DriverTest, InvalidTorquesAreRejectedCountedAndBrake) {
   const DriverCounters& n = h.driver.counters();
   EXPECT_EQ(n.rejected_non_finite, 3u);
   EXPECT_EQ(n.rejected_out_of_range, 2u);
-  EXPECT_EQ(n.rejected_stale, 1u);
-  EXPECT_EQ(h.driver.onTorqueMessage(40.0, -40.0, false, h.now - 0.05, h.now),
-            TorqueVerdict::kAccepted);  // the limits themselves are valid
+  EXPECT_EQ(n.rejected_stale, 2u);
+  EXPECT_EQ(h.torque(40.0, -40.0, false, 0.05), TorqueVerdict::kAccepted);  // limits are valid
+}
+
+// Commands carry their creation time and sequence: a command older than the watchdog, one
+// without a stamp or one replayed (a sequence not above the last) never drives; a new session
+// (the controller reloaded) starts its own sequence.
+TEST_F(DriverTest, StaleUnstampedAndReplayedCommandsAreRejected) {
+  h.torque(2.0, 2.0);
+  ASSERT_EQ(h.driver.state(), DriverState::kDriving);
+  const std::uint64_t last = h.command_sequence;
+  EXPECT_EQ(h.driver.onCommand({2, 2, false, h.now, last, 1}, h.now), TorqueVerdict::kReplayed);
+  EXPECT_EQ(h.driver.state(), DriverState::kWaitingForCommand);
+  EXPECT_EQ(h.driver.onCommand({2, 2, false, 0.0, last + 1, 1}, h.now), TorqueVerdict::kUnstamped);
+  EXPECT_EQ(h.driver.onCommand({2, 2, false, h.now - 0.1, last + 2, 1}, h.now),
+            TorqueVerdict::kStale);
+  h.run(0.001);
+  EXPECT_EQ(h.driver.onCommand({2, 2, false, h.now, 1, 2}, h.now), TorqueVerdict::kAccepted)
+      << "a reloaded controller is a new session";
+  EXPECT_EQ(h.driver.state(), DriverState::kDriving);
 }
 
 TEST_F(DriverTest, BrakeRequestInTheMessageBrakes) {
@@ -212,6 +241,8 @@ TEST_F(DriverTest, BrakeRequestInTheMessageBrakes) {
   EXPECT_FALSE(isFault(h.driver.state()));
 }
 
+// Every braking fault bit brakes at once, and during a drive it latches (released by the rider);
+// the bad-frame report ends the drive with the controller's controlled stop instead.
 TEST_F(DriverTest, EveryControllerFaultBitBrakes) {
   for (int bit = 0; bit < protocol::kFaultBitCount; ++bit) {
     const auto fault = static_cast<std::uint16_t>(1u << bit);
@@ -219,11 +250,20 @@ TEST_F(DriverTest, EveryControllerFaultBitBrakes) {
     ASSERT_EQ(h.driver.state(), DriverState::kDriving) << bit;
     h.controller.setInjectedFaults(fault);
     driveFor(0.02, 2.0, 2.0);  // at least one status frame (10 ms)
-    EXPECT_EQ(h.driver.state(), DriverState::kControllerFault) << bit;
     EXPECT_EQ(h.driver.controllerFaults(), fault);
-    EXPECT_TRUE(h.driver.lastCommand().brake);
-    EXPECT_TRUE(h.plant.braked());
+    if (fault & protocol::kReportOnlyFaults) {
+      EXPECT_EQ(h.driver.state(), DriverState::kStopping) << bit;
+      EXPECT_EQ(h.driver.latchCause(), LatchCause::kCorruptStream);
+      EXPECT_FALSE(h.plant.braked()) << "the controlled stop runs on valid frames";
+    } else {
+      EXPECT_EQ(h.driver.state(), DriverState::kLatched) << bit;
+      EXPECT_EQ(h.driver.latchCause(), LatchCause::kInterrupted) << bit;
+      EXPECT_TRUE(h.driver.lastCommand().brake);
+      EXPECT_TRUE(h.plant.braked());
+    }
     h.controller.setInjectedFaults(0);
+    h.driver.riderRelease(h.now);
+    h.run(0.02);
   }
 }
 
@@ -250,6 +290,10 @@ TEST_F(DriverTest, ErrorFramesAndForeignCommandsAreCounted) {
   EXPECT_EQ(h.driver.counters().error_frames, 1u);
   EXPECT_NE(h.driver.lastBusError().find("bus-off"), std::string::npos);
   EXPECT_EQ(h.driver.counters().foreign_commands, 1u);
+  // Another sender of torque commands on the bus: braked and latched.
+  EXPECT_EQ(h.driver.state(), DriverState::kLatched);
+  EXPECT_EQ(h.driver.latchCause(), LatchCause::kForeignCommand);
+  EXPECT_EQ(h.driver.sentence(), "another device is sending motor commands");
 }
 
 TEST(DriverConfig, ValidationNamesTheBadValue) {

@@ -38,6 +38,18 @@ TEST(RefusedParameters, AnInvalidValueRefusesTheDriver) {
   EXPECT_FALSE(loads("/wrong_type_driver", {{"command_timeout", std::string("fast")}}));
 }
 
+// The drive channel has one driver per process: a second one (another nodelet loaded into the
+// chair's manager) would be a second path to the motors.
+TEST(RefusedParameters, ASecondDriverInTheProcessIsRefused) {
+  ros::param::set("/first_driver/transport", std::string("fake"));
+  ros::param::set("/first_driver/fake_bus", std::string("first_driver"));
+  static nodelet::Loader loader(false);
+  ASSERT_TRUE(loader.load("/first_driver", "wheelchair_base_driver/BaseDriverNodelet", {}, {}));
+  EXPECT_FALSE(loads("/second_driver", {}));
+  loader.unload("/first_driver");
+  EXPECT_TRUE(loads("/third_driver", {})) << "the role is free again once the first is unloaded";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

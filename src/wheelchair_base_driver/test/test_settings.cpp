@@ -17,6 +17,7 @@ BaseDriverSettings chairDefaults() {
   s.driver.geometry.wheel_radius = 0.17;
   s.driver.geometry.half_track = 0.275;
   s.driver.max_torque = 50.0;
+  s.driver.max_speed = 1.5;
   return s;
 }
 
@@ -46,6 +47,10 @@ TEST(Settings, TheDefaultsAreTheStructsAndTheChairs) {
   EXPECT_DOUBLE_EQ(s.driver.command_timeout, 0.1);
   EXPECT_DOUBLE_EQ(s.driver.controller_timeout, 0.2);
   EXPECT_DOUBLE_EQ(s.driver.max_torque, 50.0);  // the chair's max_wheel_torque
+  EXPECT_DOUBLE_EQ(s.driver.max_speed, 1.5);    // the chair's max_speed
+  EXPECT_DOUBLE_EQ(s.driver.permit_timeout, 0.1);
+  EXPECT_DOUBLE_EQ(s.driver.stop_window, 4.0);
+  EXPECT_DOUBLE_EQ(s.driver.controller_wall_timeout, 1.0);
   EXPECT_EQ(s.odom_frame, "odom");
   EXPECT_EQ(s.base_frame, "base_link");
   EXPECT_EQ(s.left_wheel_joint, "left_wheel_joint");
@@ -84,6 +89,9 @@ TEST(Settings, InvalidValuesAreRefused) {
             std::string::npos);
   EXPECT_NE(errorOf("max_torque: 400").find("327.67"), std::string::npos);
   EXPECT_NE(errorOf("odom_rate: -1").find("odom_rate"), std::string::npos);
+  EXPECT_NE(errorOf("permit_timeout: 0").find("permit_timeout must be positive"),
+            std::string::npos);
+  EXPECT_NE(errorOf("max_speed: -1").find("max_speed"), std::string::npos);
 }
 
 }  // namespace

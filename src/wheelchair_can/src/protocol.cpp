@@ -48,14 +48,14 @@ DecodeError decodeTorque(const CanFrame& f, Message* out) {
     return e;
   }
   const std::uint8_t flags = f.data[4];
-  if ((flags & ~(kFlagEnable | kFlagBrake)) != 0 || f.data[5] != 0)
-    return DecodeError::kReservedBits;
+  if ((flags & ~(kFlagEnable | kFlagBrake)) != 0) return DecodeError::kReservedBits;
   TorqueCommand m;
   m.left = rawToTorque(static_cast<std::int16_t>(getU16(&f.data[0])));
   m.right = rawToTorque(static_cast<std::int16_t>(getU16(&f.data[2])));
   m.enable = (flags & kFlagEnable) != 0;
   m.brake = (flags & kFlagBrake) != 0;
   m.sequence = f.data[6];
+  m.time_tag = f.data[5];
   *out = m;
   return DecodeError::kNone;
 }
@@ -103,7 +103,8 @@ std::string faultBitName(int bit) {
   static const char* const kNames[] = {
       "overcurrent_left",      "overcurrent_right", "overvoltage",   "undervoltage",
       "overtemperature",       "encoder_left",      "encoder_right", "command_timeout",
-      "driver_heartbeat_lost", "bad_command",       "brake",         "hardware_estop"};
+      "driver_heartbeat_lost", "bad_command",       "brake",         "hardware_estop",
+      "stale_command"};
   if (bit >= 0 && bit < static_cast<int>(sizeof(kNames) / sizeof(kNames[0]))) return kNames[bit];
   return "reserved_" + std::to_string(bit);
 }
@@ -171,6 +172,18 @@ std::int32_t encoderDelta(std::uint32_t a, std::uint32_t b) {
              : static_cast<std::int32_t>(d);
 }
 
+std::uint8_t timeTag(double time) {
+  const double ticks = std::floor(time / kTimeTagTick);
+  if (!std::isfinite(ticks)) return 0;
+  return static_cast<std::uint8_t>(static_cast<std::int64_t>(std::fmod(ticks, 256.0) + 256.0) &
+                                   0xFF);
+}
+
+double timeTagAge(std::uint8_t tag, double now) {
+  const auto ticks = static_cast<std::int8_t>(static_cast<std::uint8_t>(timeTag(now) - tag));
+  return ticks * kTimeTagTick;
+}
+
 CanFrame encode(const TorqueCommand& m) {
   CanFrame f = makeFrame(kTorqueCommandId, kTorqueCommandLength);
   const bool finite = std::isfinite(m.left) && std::isfinite(m.right);
@@ -179,6 +192,7 @@ CanFrame encode(const TorqueCommand& m) {
   f.data[4] =
       finite ? static_cast<std::uint8_t>((m.enable ? kFlagEnable : 0) | (m.brake ? kFlagBrake : 0))
              : kFlagBrake;
+  f.data[5] = m.time_tag;
   f.data[6] = m.sequence;
   return seal(f);
 }

@@ -1,13 +1,17 @@
-// rostest: the controller nodelet tracks a path (tf map->base_link and /odom fed here), then
-// gets a fault (~fault: nan_path | stale_pose | pose_jump | zero_length_path | safety_stop |
-// user_stop | localization_lost) and must command zero torque + brake and report
+// rostest: the controller nodelet (loaded into this process, so that the test can act as the
+// safety supervisor through the drive channel) tracks a path (tf map->base_link and /odom fed
+// here), then gets a fault (~fault: nan_path | stale_pose | pose_jump | zero_length_path |
+// safety_stop | user_stop | localization_lost) and must command zero torque + brake and report
 // "aborted: <reason>" on ~status; after the stop, it resumes only as specified. ~path_status
-// says the same and names the path it concerns (the stamp of the /plan it answers).
+// says the same and names the path it concerns (the stamp of the /plan it answers). The
+// supervisor's hold comes through the drive channel only: /safety/stop false from any node and a
+// re-published /plan do not undo it.
 #include <actionlib_msgs/GoalStatus.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
+#include <nodelet/loader.h>
 #include <ros/ros.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/Empty.h>
@@ -15,6 +19,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_msgs/WheelTorques.h>
+#include <wheelchair_ros/drive_channel.h>
 
 #include <atomic>
 #include <cmath>
@@ -57,7 +62,7 @@ const std::map<std::string, std::string> kExpectedReason = {
     {"stale_pose", "stale pose"},
     {"pose_jump", "pose jump"},
     {"zero_length_path", "zero-length"},
-    {"safety_stop", "safety stop"},
+    {"safety_stop", "safety stop: the laser scanner is silent"},
     {"user_stop", "user stop"},
     {"localization_lost", "localization lost: test"}};
 
@@ -142,9 +147,10 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
     path = straightPath(-1, 0.0);
     path_pub.publish(path);
   } else if (fault == "safety_stop") {
-    std_msgs::Bool stop;
-    stop.data = true;
-    safety_pub.publish(stop);
+    wheelchair_ros::SafetyHold hold;  // what the supervisor of this process says
+    hold.stop = true;
+    hold.sentence = "the laser scanner is silent";
+    ASSERT_TRUE(wheelchair_ros::driveChannel()->hold(hold));
   } else if (fault == "user_stop") {
     user_stop_pub.publish(std_msgs::Empty());
   } else if (fault == "localization_lost") {
@@ -178,9 +184,19 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
     // The rider must hear that this (newer) path was refused: the abort now answers it.
     EXPECT_TRUE(path_status_is(actionlib_msgs::GoalStatus::ABORTED, path.header.stamp))
         << "~path_status of a path refused during a hold; status: " << status;
-    std_msgs::Bool clear;
-    clear.data = false;
-    safety_pub.publish(clear);
+    if (fault == "safety_stop") {
+      // The issue: another node published /safety/stop false and re-published the last /plan:
+      // the chair drove 1.12 m. Neither is the supervisor's word.
+      std_msgs::Bool foreign_clear;
+      foreign_clear.data = false;
+      safety_pub.publish(foreign_clear);
+      ros::WallDuration(0.3).sleep();
+      path_pub.publish(path);
+      ros::WallDuration(1.0).sleep();
+      EXPECT_TRUE(stopped()) << "a foreign /safety/stop false and a re-published plan resumed; "
+                             << "status: " << status;
+      wheelchair_ros::driveChannel()->hold(wheelchair_ros::SafetyHold());  // the supervisor's
+    }
     wheelchair_msgs::LocalizationStatus localized;
     localized.state = wheelchair_msgs::LocalizationStatus::LOCALIZED;
     localized.localized = true;
@@ -200,5 +216,9 @@ TEST(ControllerNodelet, FaultEndsInZeroTorqueAndBrake) {
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "controller_fault_rostest");
-  return RUN_ALL_TESTS();
+  nodelet::Loader loader(false);  // the controller, with the .test file's /controller parameters
+  if (!loader.load("/controller", "wheelchair_controller/ControllerNodelet", {}, {})) return 1;
+  const int result = RUN_ALL_TESTS();
+  loader.unload("/controller");
+  return result;
 }

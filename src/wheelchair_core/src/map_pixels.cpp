@@ -10,6 +10,10 @@ int8_t pixelToCell(double color_avg, double alpha, const MapFileOptions& options
   if (options.mode == MapMode::kRaw) {
     return static_cast<int8_t>(static_cast<uint8_t>(v));  // as map_server: 255 -> -1
   }
+  // Trinary: map_saver's unknown grey is unknown whatever the thresholds say. With
+  // free_thresh > 0.196 (Nav2's default 0.25) p = 50/255 fell below it and unknown space loaded
+  // as free: the planner planned into it (Nav2 PR #5138 / #5278).
+  if (options.mode == MapMode::kTrinary && v == kTrinaryUnknownPixel) return kUnknown;
   const double p = (255.0 - v) / 255.0;
   if (p > options.occupied_thresh) return kOccupied;
   if (p < options.free_thresh) return kFree;
@@ -19,7 +23,7 @@ int8_t pixelToCell(double color_avg, double alpha, const MapFileOptions& options
 }
 
 uint8_t cellToPixel(int8_t cell, const MapFileOptions& options) {
-  uint8_t v = 205;
+  uint8_t v = kTrinaryUnknownPixel;
   switch (options.mode) {
     case MapMode::kTrinary:
       if (cell == kFree) v = 254;

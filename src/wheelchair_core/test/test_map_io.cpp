@@ -53,6 +53,25 @@ TEST(MapIo, NegateInvertsTheGreyScale) {
   EXPECT_EQ(map.at(1, 0), kOccupied);
 }
 
+// Nav2 PR #5138: map_saver writes unknown as 205, i.e. p = 50/255 = 0.196; with Nav2's default
+// free_thresh 0.25 that p is below the threshold and every unknown pixel loaded as free.
+TEST(MapIo, TrinaryUnknownStaysUnknownWhateverFreeThreshSays) {
+  TempDir dir;
+  writePgm(dir.file("u.pgm"), 4, 1, {205, 205, 254, 0});
+  for (const char* negate : {"0", "1"}) {
+    const bool negated = negate[0] == '1';
+    if (negated) writePgm(dir.file("u.pgm"), 4, 1, {50, 50, 1, 255});  // map_saver, negated
+    writeText(dir.file("u.yaml"),
+              "image: u.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: " + std::string(negate) +
+                  "\nmode: trinary\noccupied_thresh: 0.65\nfree_thresh: 0.25\n");
+    const OccupancyMap map = loadMap(dir.file("u.yaml"));
+    EXPECT_EQ(map.at(0, 0), kUnknown) << "negate " << negate;
+    EXPECT_EQ(map.at(1, 0), kUnknown) << "negate " << negate;
+    EXPECT_EQ(map.at(2, 0), kFree) << "negate " << negate;
+    EXPECT_EQ(map.at(3, 0), kOccupied) << "negate " << negate;
+  }
+}
+
 TEST(MapIo, ScaleModeInterpolatesBetweenThresholds) {
   TempDir dir;
   const uint8_t v = 150;

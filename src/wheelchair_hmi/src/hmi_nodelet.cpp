@@ -17,6 +17,7 @@
 #include <wheelchair_msgs/NavigateAction.h>
 #include <wheelchair_msgs/NavigatorState.h>
 #include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/drive_channel.h>
 #include <wheelchair_ros/parameters.h>
 
 #include <actionlib/client/simple_action_client.h>
@@ -225,6 +226,11 @@ class HmiNodelet : public nodelet::Nodelet {
       waiting_goal_.reset();
       told_.clear();
     }
+    // The rider's destination is their command to go on: it releases a latched stop of the
+    // supervisor and the base driver in this process (the only release there is).
+    if (!wheelchair_ros::releaseStopByRider("hmi: go to " + command.goal->place))
+      NODELET_WARN_ONCE("hmi: no supervisor or base driver in this process: a latched stop "
+                        "cannot be released from here");
     client_->sendGoal(
         *command.goal,
         [this, goal](const actionlib::SimpleClientGoalState& state,

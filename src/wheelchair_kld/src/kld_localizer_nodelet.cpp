@@ -77,7 +77,8 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
     std::shared_ptr<const LocalizationMap> map;
     try {
       map = std::make_shared<LocalizationMap>(
-          wheelchair_mapping::toMrptGrid(wheelchair_ros::fromOccupancyGrid(*msg)),
+          wheelchair_mapping::toMrptGrid(
+              wheelchair_ros::fromOccupancyGrid(*msg, config_.map_limits)),
           config_.filter.measurement.max_distance);
     } catch (const std::exception& e) {
       NODELET_ERROR("kld: map rejected: %s", e.what());

@@ -13,6 +13,7 @@ std::string LocalizerNodeConfig::validate() const {
       .check(scan_queue_size >= 1, "scan_queue_size must be at least 1")
       .positive("tf_timeout", tf_timeout)
       .check(seed >= 0, "seed must not be negative")
+      .check(map_limits.validate().empty(), map_limits.validate())
       .result();
 }
 
@@ -28,6 +29,7 @@ void readLocalizerNodeConfig(wheelchair_core::ConfigReader& r, LocalizerNodeConf
   r.read("scan_queue_size", c.scan_queue_size);
   r.read("tf_timeout", c.tf_timeout);
   r.read("seed", c.seed);
+  wheelchair_core::readMapLimits(r, c.map_limits);
 }
 
 }  // namespace wheelchair_kld

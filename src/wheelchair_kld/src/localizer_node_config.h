@@ -5,6 +5,7 @@
 #pragma once
 
 #include <wheelchair_core/config.h>
+#include <wheelchair_core/map_limits.h>
 #include <wheelchair_kld/kld_params.h>
 
 #include <string>
@@ -23,6 +24,8 @@ struct LocalizerNodeConfig {
   int scan_queue_size = 5;  ///< scans waiting for odometry (0.5 s of lag at 10 Hz)
   double tf_timeout = 0.5;  ///< [s] no usable scan for this long while scans arrive: no data
   int seed = 1;             ///< of every random draw of the filter
+  /// Any node can publish /map: a bigger or broken one is refused, the last good one kept.
+  wheelchair_core::MapLimits map_limits;
 
   std::string validate() const;
 };

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <wheelchair_core/config.h>
+#include <wheelchair_core/map_limits.h>
 #include <wheelchair_description/chair_file.h>
 #include <wheelchair_description/chair_params.h>
 #include <wheelchair_planner/global_planner.h>
@@ -22,14 +23,16 @@ struct HostParameters {
   std::string chair_file = wheelchair_description::defaultChairFile();
   std::string map_frame = "map";
   std::string base_frame = "base_link";
-  double max_pose_age = 0.5;  ///< [s] oldest tf map -> base_link a plan may start from
+  double max_pose_age = 0.5;              ///< [s] oldest tf map -> base_link a plan may start from
+  wheelchair_core::MapLimits map_limits;  ///< a bigger or broken /map is refused
 
   std::string validate() const {
     wheelchair_core::ConfigChecks checks;
     checks.check(!planner.empty(), "planner must name a plugin")
         .check(!chair_file.empty(), "chair_file must name the chair's description file")
         .check(!map_frame.empty() && !base_frame.empty(), "map_frame and base_frame must be set")
-        .positive("max_pose_age", max_pose_age);
+        .positive("max_pose_age", max_pose_age)
+        .check(map_limits.validate().empty(), map_limits.validate());
     return checks.result();
   }
 };
@@ -42,7 +45,7 @@ inline const std::map<std::string, std::string>& renamedPlanners() {
 }
 
 /// Keys: planner (an old plugin name is refused with the new one), chair_file (was
-/// chair_params), map_frame, base_frame, max_pose_age.
+/// chair_params), map_frame, base_frame, max_pose_age, max_map_cells.
 inline void readHostParameters(wheelchair_core::ConfigReader& reader, HostParameters& p) {
   reader.renamed("chair_params", "chair_file");
   reader.read("planner", p.planner);
@@ -50,6 +53,7 @@ inline void readHostParameters(wheelchair_core::ConfigReader& reader, HostParame
   reader.read("map_frame", p.map_frame);
   reader.read("base_frame", p.base_frame);
   reader.read("max_pose_age", p.max_pose_age);
+  wheelchair_core::readMapLimits(reader, p.map_limits);
   const auto renamed = renamedPlanners().find(p.planner);
   if (renamed != renamedPlanners().end()) {
     throw wheelchair_core::ConfigError(reader.source().where() + ": planner '" + p.planner +

@@ -65,6 +65,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
     map_frame_ = setup.host.map_frame;
     base_frame_ = setup.host.base_frame;
     max_pose_age_ = setup.host.max_pose_age;
+    map_limits_ = setup.host.map_limits;
     tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
     plan_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
     cert_pub_ = nh.advertise<wheelchair_msgs::PlanCertificate>("plan_certificate", 1, true);
@@ -92,10 +93,17 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   }
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    // Any node can publish /map: a broken or oversized map is refused before anything is
+    // prepared, and the planner keeps the last good one (it went without any before).
+    const std::string problem = wheelchair_ros::occupancyGridProblem(*msg, map_limits_);
+    if (!problem.empty()) {
+      NODELET_ERROR("planner host: map refused, keeping the last good one: %s", problem.c_str());
+      return;
+    }
     std::lock_guard<std::mutex> lock(mutex_);
     const ros::WallTime started = ros::WallTime::now();
     try {
-      static_map_ = wheelchair_ros::fromOccupancyGrid(*msg);
+      static_map_ = wheelchair_ros::fromOccupancyGrid(*msg, map_limits_);
       planner_->setMap(static_map_);
       planned_on_ = static_map_.data;
       have_map_ = true;
@@ -113,8 +121,15 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   /// The live obstacle layer: the next plan is made on /map plus its obstacles. No replan here:
   /// who drives (the navigator) decides when the change matters.
   void onObstacles(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    // Any node can publish it too: a broken layer is refused (a throw here aborted the process).
+    const std::string problem = wheelchair_ros::occupancyGridProblem(*msg, map_limits_);
+    if (!problem.empty()) {
+      NODELET_ERROR("planner host: obstacle layer refused, keeping the last good one: %s",
+                    problem.c_str());
+      return;
+    }
     std::lock_guard<std::mutex> lock(mutex_);
-    obstacles_ = wheelchair_ros::fromOccupancyGrid(*msg);
+    obstacles_ = wheelchair_ros::fromOccupancyGrid(*msg, map_limits_);
     if (have_map_) applyObstacles();
   }
 
@@ -249,6 +264,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   boost::shared_ptr<GlobalPlanner> planner_;
   std::string planner_name_, map_frame_, base_frame_;
   double max_pose_age_ = 0.0;
+  wheelchair_core::MapLimits map_limits_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   ros::Publisher plan_pub_, cert_pub_, potential_pub_;
   ros::Subscriber map_sub_, obstacles_sub_, goal_sub_;

@@ -143,17 +143,21 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const OccupancyMap& map, const std::stri
   return msg;
 }
 
-OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg) {
-  if (msg.data.size() != static_cast<size_t>(msg.info.width) * msg.info.height)
-    throw std::invalid_argument("OccupancyGrid data size differs from width x height");
-  if (!(msg.info.resolution > 0) || !std::isfinite(msg.info.resolution))
-    throw std::invalid_argument("OccupancyGrid resolution must be positive");
+std::string occupancyGridProblem(const nav_msgs::OccupancyGrid& msg,
+                                 const wheelchair_core::MapLimits& limits) {
   const auto& o = msg.info.origin;
-  // An all-zero quaternion (a default-constructed message) reads as no rotation.
   const auto& q = o.orientation;
-  if (!std::isfinite(o.position.x) || !std::isfinite(o.position.y) ||
-      !std::isfinite(q.x + q.y + q.z + q.w))
-    throw std::invalid_argument("OccupancyGrid origin is not finite");
+  // An all-zero quaternion (a default-constructed message) reads as no rotation.
+  if (!std::isfinite(q.x + q.y + q.z + q.w)) return "map origin is not finite";
+  return wheelchair_core::mapProblem(msg.info.width, msg.info.height, msg.info.resolution,
+                                     o.position.x, o.position.y, msg.data, limits);
+}
+
+OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg,
+                               const wheelchair_core::MapLimits& limits) {
+  const std::string problem = occupancyGridProblem(msg, limits);
+  if (!problem.empty()) throw std::invalid_argument(problem);
+  const auto& o = msg.info.origin;
   OccupancyMap map;
   map.resolution = msg.info.resolution;
   map.width = static_cast<int>(msg.info.width);

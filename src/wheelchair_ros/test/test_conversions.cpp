@@ -52,6 +52,41 @@ TEST(RosConversions, RejectsInconsistentMessages) {
   EXPECT_THROW(fromOccupancyGrid(msg), std::invalid_argument);
 }
 
+// Any node can publish /map: a huge grid, garbage cells or an empty grid are refused with a
+// reason before anything is copied (the 4000 x 4000 map that took the chair to 840 MB).
+TEST(RosConversions, RefusesMapsBeyondTheMemoryCapOrWithBadCellsWithAReason) {
+  nav_msgs::OccupancyGrid msg;
+  msg.info.resolution = 0.05f;
+  msg.info.width = msg.info.height = 4000;
+  msg.data.assign(4000u * 4000u, 0);
+  const std::string huge = occupancyGridProblem(msg);
+  EXPECT_NE(huge.find("4000 x 4000"), std::string::npos) << huge;
+  EXPECT_NE(huge.find("max_map_cells 1048576"), std::string::npos) << huge;
+  EXPECT_THROW(fromOccupancyGrid(msg), std::invalid_argument);
+  wheelchair_core::MapLimits roomy;
+  roomy.max_cells = 4000 * 4000;
+  EXPECT_EQ(occupancyGridProblem(msg, roomy), "");  // the cap is a parameter
+  // Width x height overflowing 32 bits is caught before the data size is compared.
+  msg.info.width = msg.info.height = 70000;
+  msg.data.clear();
+  EXPECT_NE(occupancyGridProblem(msg, roomy).find("exceeds max_map_cells"), std::string::npos);
+  msg.info.width = msg.info.height = 0;
+  EXPECT_NE(occupancyGridProblem(msg).find("no cells"), std::string::npos);
+  msg.info.width = 2;
+  msg.info.height = 2;
+  msg.data = {0, 100, -1, 101};
+  EXPECT_NE(occupancyGridProblem(msg).find("cell 3 has value 101"), std::string::npos)
+      << occupancyGridProblem(msg);
+  msg.data[3] = -2;
+  EXPECT_THROW(fromOccupancyGrid(msg), std::invalid_argument);
+  msg.data[3] = 50;
+  EXPECT_EQ(occupancyGridProblem(msg), "");
+  msg.info.resolution = -0.05f;
+  EXPECT_NE(occupancyGridProblem(msg).find("resolution"), std::string::npos);
+  msg.info.resolution = NAN;
+  EXPECT_NE(occupancyGridProblem(msg).find("resolution"), std::string::npos);
+}
+
 TEST(RosConversions, ADefaultConstructedOriginIsNoRotation) {
   nav_msgs::OccupancyGrid msg;
   msg.info.width = msg.info.height = 1;

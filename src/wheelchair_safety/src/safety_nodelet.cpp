@@ -1,14 +1,19 @@
 // ROS layer of the safety supervisor: feeds it the localizer's estimate and status, tf
 // map -> base_link, the laser (returns projected into the map), the map, the plan, the base
-// driver's status and the rider's commands; publishes a latched stop flag and the typed status
-// (wheelchair_msgs/SafetyStatus) whenever the verdict changes.
+// driver's status and the rider's stop. In the command path through the process's drive channel
+// (wheelchair_ros/drive_channel.h): at every check a sequence-numbered permit to the base driver
+// (which brakes without a fresh one: unloading, crashing or hanging the supervisor stops the
+// chair) and its verdict to the controller (a hold while it says stop). A stop latches until the
+// rider's release (wheelchair_ros::releaseStopByRider, called by the HMI), never by a topic.
+// Publishes the latched stop flag and the typed status (wheelchair_msgs/SafetyStatus), outputs
+// only, whenever the verdict changes.
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/drive_channel.h>
 #include <wheelchair_ros/parameters.h>
 #include <wheelchair_ros/shared_tf.h>
 #include <wheelchair_safety/safety_supervisor.h>
 
-#include <diagnostic_msgs/DiagnosticStatus.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -23,6 +28,7 @@
 #include <tf2_ros/buffer.h>
 #include <pluginlib/class_list_macros.hpp>
 
+#include <atomic>
 #include <memory>
 #include <mutex>
 
@@ -34,15 +40,20 @@ namespace wheelchair_safety {
 struct SafetyNodeletConfig {
   SafetyLimits limits;
   ProtectiveField field;
-  double rate = 20.0;  ///< [Hz] checks per second (and at once on a new goal)
+  wheelchair_core::MapLimits map_limits;  ///< a bigger or broken /map is refused
+  /// [Hz] checks per second (and at once on a new goal), each with a permit to the driver: the
+  /// command rate (the driver's permit_timeout is 100 ms).
+  double rate = 50.0;
   std::string map_frame = "map";
   std::string base_frame = "base_link";
 
   std::string validate() const {
     const std::string limits_problem = limits.validate(), field_problem = field.validate();
+    const std::string map_problem = map_limits.validate();
     wheelchair_core::ConfigChecks checks;
     checks.check(limits_problem.empty(), limits_problem)
         .check(field_problem.empty(), field_problem)
+        .check(map_problem.empty(), map_problem)
         .positive("rate", rate)
         .check(!map_frame.empty(), "map_frame must not be empty")
         .check(!base_frame.empty(), "base_frame must not be empty");
@@ -53,20 +64,41 @@ struct SafetyNodeletConfig {
 void readSafetyNodeletConfig(wheelchair_core::ConfigReader& reader, SafetyNodeletConfig& config) {
   readSafetyLimits(reader, config.limits);
   readProtectiveField(reader, config.field);
+  wheelchair_core::readMapLimits(reader, config.map_limits);
   reader.read("rate", config.rate);
   reader.read("map_frame", config.map_frame);
   reader.read("base_frame", config.base_frame);
 }
 
 class SafetyNodelet : public nodelet::Nodelet {
+ public:
+  ~SafetyNodelet() override {
+    timer_.stop();
+    registration_.reset();  // no permit any more: the driver brakes within its permit_timeout
+  }
+
  private:
   void onInit() override {
     ros::NodeHandle nh = getNodeHandle();
+    // The chair's supervisor: the one that permits motion (a second one is refused).
+    channel_ = wheelchair_ros::driveChannel();
+    try {
+      registration_ = channel_->attachSupervisor(
+          {[this](const wheelchair_ros::DriverReport& r) { onDriverReport(r); },
+           [this](const wheelchair_ros::RiderRelease& r) { onRiderRelease(r); }});
+    } catch (const std::logic_error& e) {
+      throw wheelchair_core::ConfigError(getName() + ": " + e.what());
+    }
     const auto config = wheelchair_ros::loadParameters<SafetyNodeletConfig>(
         getPrivateNodeHandle(), readSafetyNodeletConfig);
     map_frame_ = config.map_frame;
     base_frame_ = config.base_frame;
-    supervisor_ = std::make_unique<SafetySupervisor>(config.limits, config.field);
+    map_limits_ = config.map_limits;
+    driver_fault_grace_ = config.limits.driver_fault_grace;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);  // the channel may call before onInit ends
+      supervisor_ = std::make_unique<SafetySupervisor>(config.limits, config.field);
+    }
     tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
 
     stop_pub_ = nh.advertise<std_msgs::Bool>("safety/stop", 1, true);
@@ -78,16 +110,24 @@ class SafetyNodelet : public nodelet::Nodelet {
     subs_.push_back(nh.subscribe("rear_scan", 5, &SafetyNodelet::onRearScan, this));
     subs_.push_back(nh.subscribe("kld_pose", 5, &SafetyNodelet::onEstimate, this));
     subs_.push_back(nh.subscribe("localization/status", 5, &SafetyNodelet::onLocalization, this));
-    subs_.push_back(nh.subscribe("base_driver/status", 5, &SafetyNodelet::onDriver, this));
     subs_.push_back(nh.subscribe("odom", 5, &SafetyNodelet::onOdometry, this));
     subs_.push_back(nh.subscribe("user_stop", 5, &SafetyNodelet::onUserStop, this));
     subs_.push_back(nh.subscribe("move_base_simple/goal", 5, &SafetyNodelet::onGoal, this));
+    ready_ = true;
     timer_ = nh.createTimer(ros::Duration(1.0 / config.rate), &SafetyNodelet::onTimer, this);
   }
 
+  /// A map any node may have published: refused with the reason unless usable (an uncaught
+  /// throw here aborted the whole chair process); the supervisor keeps the last good map.
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    const std::string problem = wheelchair_ros::occupancyGridProblem(*msg, map_limits_);
+    if (!problem.empty()) {
+      NODELET_ERROR("safety: map refused, keeping the last good one: %s", problem.c_str());
+      return;
+    }
+    wheelchair_core::OccupancyMap map = wheelchair_ros::fromOccupancyGrid(*msg, map_limits_);
     std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onMap(wheelchair_ros::fromOccupancyGrid(*msg));
+    supervisor_->onMap(map);
   }
 
   /// A new plan is checked at once (not at the next tick): a plan that backs up with the rear
@@ -171,26 +211,43 @@ class SafetyNodelet : public nodelet::Nodelet {
     return true;
   }
 
-  void onDriver(const diagnostic_msgs::DiagnosticStatus::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onDriverStatus(ros::Time::now().toSec(),
-                                msg->level >= diagnostic_msgs::DiagnosticStatus::ERROR,
-                                msg->message);
-  }
-
   void onUserStop(const std_msgs::Empty::ConstPtr&) {
     std::lock_guard<std::mutex> lock(mutex_);
     supervisor_->onUserStop(ros::Time::now().toSec());
   }
 
-  /// A new goal is the rider's command to go on: the verdict goes out at once, before the
-  /// planner's path reaches the controller (which ignores paths while stopped).
-  void onGoal(const geometry_msgs::PoseStamped::ConstPtr&) {
+  /// A goal is not a release (any node can publish one, and re-publishing a plan cannot undo a
+  /// stop): the verdict goes out at once, before the planner's path reaches the controller.
+  void onGoal(const geometry_msgs::PoseStamped::ConstPtr&) { update(); }
+
+  /// The rider's own command to go on (the HMI, through the drive channel): clears the latched
+  /// stop; if a condition still holds, this very check stops again.
+  void onRiderRelease(const wheelchair_ros::RiderRelease& release) {
+    if (!ready_) return;
     {
       std::lock_guard<std::mutex> lock(mutex_);
+      if (supervisor_->latched().stop)
+        NODELET_WARN("safety: stop released by the rider (%s)", release.source.c_str());
       supervisor_->onUserCommand(ros::Time::now().toSec());
     }
     update();
+  }
+
+  /// The driver's state (drive channel, on every change; any node could publish the driver's
+  /// status topic): a fault or a latched stop (a foreign command, a hang...) that lasts
+  /// driver_fault_grace is the supervisor's stop too, held until the rider's release.
+  void onDriverReport(const wheelchair_ros::DriverReport& report) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!supervisor_) return;  // not set up yet: the driver reports again on its next change
+    if ((report.fault || report.latched) && !report.sentence.empty())
+      driver_sentence_ = report.sentence;  // the rider hears the driver's words for its stop
+    // A latched driver stop is final (the grace is for a motor controller that re-arms within a
+    // command period): it counts at once, before its consequences (odometry and with it tf stop
+    // when the motor side loses power) make the rider hear another reason.
+    const double now = ros::Time::now().toSec();
+    supervisor_->onDriverStatus(
+        report.latched ? now - driver_fault_grace_ : now, report.fault || report.latched,
+        report.sentence + (report.detail.empty() ? "" : ": ") + report.detail);
   }
 
   void onTimer(const ros::TimerEvent&) { update(); }
@@ -203,22 +260,39 @@ class SafetyNodelet : public nodelet::Nodelet {
       have_pose = true;
     } catch (const tf2::TransformException&) {
     }
-    std::lock_guard<std::mutex> lock(mutex_);
+    std::unique_lock<std::mutex> lock(mutex_);
     if (have_pose)
       supervisor_->onPose(base_in_map.header.stamp.toSec(),
                           wheelchair_ros::toPose2D(base_in_map.transform));
     const ros::Time now = ros::Time::now();
-    const wheelchair_msgs::SafetyStatus status =
-        toSafetyStatus(supervisor_->check(now.toSec()), now);
+    wheelchair_msgs::SafetyStatus status = toSafetyStatus(supervisor_->check(now.toSec()), now);
     publishSpeedLimit(supervisor_->speedLimit());
-    if (published_ && sameVerdict(status, last_)) return;
-    if (status.stop) NODELET_WARN("STOP: %s: %s", status.sentence.c_str(), status.detail.c_str());
-    std_msgs::Bool stop;
-    stop.data = status.stop;
-    stop_pub_.publish(stop);
-    status_pub_.publish(status);
-    published_ = true;
-    last_ = status;
+    if (status.reason == wheelchair_msgs::SafetyStatus::DRIVER_FAULT && !driver_sentence_.empty())
+      status.sentence = driver_sentence_;  // e.g. "another program tried to drive the chair"
+    wheelchair_ros::DrivePermit permit;
+    permit.sequence = ++permit_sequence_;
+    permit.stamp = now.toSec();
+    permit.stop = status.stop;
+    wheelchair_ros::SafetyHold hold;
+    hold.stop = status.stop;
+    hold.sentence = status.sentence;
+    hold.detail = status.detail;
+    const bool changed = !published_ || !sameVerdict(status, last_);
+    if (changed) {
+      if (status.stop) NODELET_WARN("STOP: %s: %s", status.sentence.c_str(), status.detail.c_str());
+      std_msgs::Bool stop;
+      stop.data = status.stop;
+      stop_pub_.publish(stop);
+      status_pub_.publish(status);
+      published_ = true;
+      last_ = status;
+    }
+    lock.unlock();
+    // After unlocking (the channel calls the driver and the controller, whose reports come back
+    // here): the verdict to the controller first, so that a stop holds it before the permit
+    // tells the driver; every check, so that a controller loaded later learns it too.
+    channel_->hold(hold);
+    channel_->grant(permit);
   }
 
   /// Every check: the controller drives no faster (+inf: no limit from the field).
@@ -236,12 +310,19 @@ class SafetyNodelet : public nodelet::Nodelet {
   std::unique_ptr<SafetySupervisor> supervisor_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   std::string map_frame_, base_frame_;
+  wheelchair_core::MapLimits map_limits_;
   bool have_status_ = false, localized_ = false;
   std::string why_not_ = "no localizer status yet";
+  double driver_fault_grace_ = 0.0;
+  std::string driver_sentence_;  ///< the driver's words for its last fault or latched stop
   Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Identity();
   ros::Publisher stop_pub_, status_pub_, speed_limit_pub_;
   std::vector<ros::Subscriber> subs_;
   ros::Timer timer_;
+  std::shared_ptr<wheelchair_ros::DriveChannel> channel_;
+  std::unique_ptr<wheelchair_ros::DriveChannel::Registration> registration_;
+  std::uint64_t permit_sequence_ = 0;
+  std::atomic<bool> ready_{false};  ///< set up: a release may check
   bool published_ = false;
   wheelchair_msgs::SafetyStatus last_;
 };

@@ -1,18 +1,27 @@
 // The supervisor nodelet in a live graph: healthy data keeps it quiet; a person stepping onto
 // the path, or a silent laser, stops the chair with the reason (scenario from ~scenario).
+// Scenario command_path: the nodelet is loaded into this process, which plays the base driver on
+// the drive channel: permits at the check rate, a latch that no topic releases, only the rider
+// (wheelchair_ros::releaseStopByRider), and no permit once the supervisor is unloaded.
+#include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
+#include <nodelet/loader.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_msgs/SafetyStatus.h>
+#include <wheelchair_ros/drive_channel.h>
 
 #include <cmath>
+#include <memory>
+#include <mutex>
+#include <vector>
 
 namespace {
 
@@ -103,6 +112,16 @@ class World {
     return false;
   }
 
+  /// Runs cycles for `seconds`.
+  void run(double seconds, bool scan) {
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+    while (ros::ok() && ros::WallTime::now() < end) {
+      cycle(scan, false);
+      ros::WallDuration(0.1).sleep();
+      ros::spinOnce();
+    }
+  }
+
   int stop_ = -1;
   bool ready_ = false;
   wheelchair_msgs::SafetyStatus status_;
@@ -116,9 +135,17 @@ class World {
 
 }  // namespace
 
+std::unique_ptr<nodelet::Loader> loader;  ///< the supervisor, in scenario command_path
+
+std::string scenario() {
+  std::string name;
+  ros::param::param<std::string>("~scenario", name, "person");
+  return name;
+}
+
 TEST(SafetyNode, ScenarioStopsWithItsReason) {
-  std::string scenario;
-  ros::param::param<std::string>("~scenario", scenario, "person");
+  if (scenario() == "command_path") GTEST_SKIP() << "see SupervisorInTheCommandPath";
+  const std::string scenario = ::scenario();
   World world;
   ASSERT_TRUE(world.runUntil(15.0, true, false, false)) << "healthy data: " << world.status_;
   EXPECT_EQ(world.status_.reason, wheelchair_msgs::SafetyStatus::NONE) << world.status_;
@@ -139,8 +166,120 @@ TEST(SafetyNode, ScenarioStopsWithItsReason) {
   }
 }
 
+/// What the base driver of this process receives from the supervisor.
+struct DriverSide {
+  struct Permit {
+    wheelchair_ros::DrivePermit permit;
+    ros::WallTime received;
+  };
+  std::mutex mutex;
+  std::vector<Permit> permits;
+  int releases = 0;
+
+  std::vector<Permit> since(const ros::WallTime& t) {
+    std::lock_guard<std::mutex> lock(mutex);
+    std::vector<Permit> out;
+    for (const Permit& p : permits)
+      if (p.received >= t) out.push_back(p);
+    return out;
+  }
+};
+
+// The issue: the supervisor could be unloaded and nothing noticed; its latch was released by
+// /safety/stop false from any node and a re-published plan (the chair drove 1.12 m).
+TEST(SafetyNode, SupervisorInTheCommandPath) {
+  if (scenario() != "command_path") GTEST_SKIP() << "scenario " << scenario();
+  ASSERT_TRUE(loader);
+  auto driver = std::make_shared<DriverSide>();
+  auto channel = wheelchair_ros::driveChannel();
+  auto registration =
+      channel->attachDriver({[](const wheelchair_ros::DriveCommand&) { return false; },
+                             [driver](const wheelchair_ros::DrivePermit& p) {
+                               std::lock_guard<std::mutex> lock(driver->mutex);
+                               driver->permits.push_back({p, ros::WallTime::now()});
+                             },
+                             [driver](const wheelchair_ros::RiderRelease&) {
+                               std::lock_guard<std::mutex> lock(driver->mutex);
+                               ++driver->releases;
+                             }});
+  World world;
+  ASSERT_TRUE(world.runUntil(15.0, true, false, false)) << "healthy data: " << world.status_;
+
+  // A permit at the check rate (50 Hz; >= 30 in a second on a loaded machine), sequence
+  // numbered, fresh, saying go.
+  ros::WallTime t = ros::WallTime::now();
+  world.run(1.0, true);
+  std::vector<DriverSide::Permit> permits = driver->since(t);
+  ASSERT_GE(permits.size(), 30u) << "permits in 1 s";
+  for (size_t i = 1; i < permits.size(); ++i) {
+    EXPECT_GT(permits[i].permit.sequence, permits[i - 1].permit.sequence);
+    EXPECT_EQ(permits[i].permit.session, permits[0].permit.session);
+  }
+  EXPECT_FALSE(permits.back().permit.stop);
+  EXPECT_NEAR(permits.back().permit.stamp, ros::Time::now().toSec(), 0.2);
+
+  // A silent laser: a stop, and the permits say so.
+  ASSERT_TRUE(world.runUntil(5.0, false, false, true));
+  EXPECT_EQ(world.status_.reason, wheelchair_msgs::SafetyStatus::LASER_SILENT) << world.status_;
+  t = ros::WallTime::now();
+  world.run(0.3, true);
+  permits = driver->since(t);
+  ASSERT_FALSE(permits.empty());
+  EXPECT_TRUE(permits.back().permit.stop);
+
+  // Another node says "no stop" and re-sends the plan and a goal: the stop holds.
+  ros::NodeHandle nh;
+  ros::Publisher foreign_stop = nh.advertise<std_msgs::Bool>("safety/stop", 1);
+  ros::Publisher goal_pub = nh.advertise<geometry_msgs::PoseStamped>("move_base_simple/goal", 1);
+  ros::WallDuration(0.5).sleep();  // connections
+  std_msgs::Bool no_stop;
+  no_stop.data = false;
+  foreign_stop.publish(no_stop);
+  geometry_msgs::PoseStamped goal;
+  goal.header.frame_id = "map";
+  goal.header.stamp = ros::Time::now();
+  goal.pose.position.x = 8.0;
+  goal.pose.position.y = 2.0;
+  goal.pose.orientation.w = 1.0;
+  goal_pub.publish(goal);
+  const ros::WallTime foreign = ros::WallTime::now();
+  world.run(2.0, true);  // healthy data again
+  EXPECT_TRUE(world.status_.stop) << "a foreign /safety/stop false or goal released the stop: "
+                                  << world.status_;
+  for (const auto& p : driver->since(foreign))
+    ASSERT_TRUE(p.permit.stop) << "a permit to go without the rider's release";
+  EXPECT_TRUE(driver->since(ros::WallTime::now() - ros::WallDuration(0.2)).back().permit.stop);
+
+  // The rider's release (the HMI's call) lifts it; the driver's latch is released too.
+  EXPECT_TRUE(wheelchair_ros::releaseStopByRider("test: the rider chose a destination"));
+  EXPECT_TRUE(world.runUntil(2.0, true, false, false)) << world.status_;
+  t = ros::WallTime::now();
+  world.run(0.3, true);
+  permits = driver->since(t);
+  ASSERT_FALSE(permits.empty());
+  EXPECT_FALSE(permits.back().permit.stop);
+  {
+    std::lock_guard<std::mutex> lock(driver->mutex);
+    EXPECT_EQ(driver->releases, 1);
+  }
+
+  // Unloaded, the supervisor permits nothing more (the driver brakes after permit_timeout).
+  ASSERT_TRUE(loader->unload("/safety"));
+  EXPECT_FALSE(channel->hasSupervisor());
+  t = ros::WallTime::now();
+  world.run(0.5, true);
+  EXPECT_TRUE(driver->since(t).empty()) << "permits after the supervisor was unloaded";
+}
+
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "test_safety_node");
-  return RUN_ALL_TESTS();
+  ros::NodeHandle nh;
+  if (scenario() == "command_path") {
+    loader = std::make_unique<nodelet::Loader>(false);  // /safety's parameters from the .test
+    if (!loader->load("/safety", "wheelchair_safety/SafetyNodelet", {}, {})) return 1;
+  }
+  const int result = RUN_ALL_TESTS();
+  loader.reset();
+  return result;
 }

@@ -13,6 +13,7 @@
 #include <wheelchair_sim/AddMovingObstacle.h>
 #include <wheelchair_sim/AddObstacle.h>
 #include <wheelchair_sim/EnableLaser.h>
+#include <wheelchair_sim/MotorFault.h>
 #include <wheelchair_sim/SetPose.h>
 #include <wheelchair_sim/motor_plant_adapter.h>
 #include <wheelchair_sim/simulated_chair.h>
@@ -99,6 +100,8 @@ class SimulatorNodelet : public nodelet::Nodelet {
     clear_obstacles_srv_ =
         nh.advertiseService("sim/clear_obstacles", &SimulatorNodelet::onClearObstacles, this);
     laser_srv_ = nh.advertiseService("sim/enable_laser", &SimulatorNodelet::onEnableLaser, this);
+    if (motor_controller_)
+      fault_srv_ = nh.advertiseService("sim/motor_fault", &SimulatorNodelet::onMotorFault, this);
     rear_laser_srv_ =
         nh.advertiseService("sim/enable_rear_laser", &SimulatorNodelet::onEnableRearLaser, this);
     tf_ = std::make_unique<tf2_ros::TransformBroadcaster>();
@@ -201,6 +204,28 @@ class SimulatorNodelet : public nodelet::Nodelet {
     laser_on_ = req.enable;
     res.success = true;
     res.message = req.enable ? "laser on" : "laser silent";
+    NODELET_WARN("%s", res.message.c_str());
+    return true;
+  }
+
+  /// A single fault of the motor side, injected into the emulated motor controller.
+  bool onMotorFault(MotorFault::Request& req, MotorFault::Response& res) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    res.success = true;
+    if (req.fault == "power_off" || req.fault == "power_on") {
+      motor_controller_->setPowered(req.fault == "power_on");
+    } else if (req.fault == "freeze_left_encoder" || req.fault == "freeze_right_encoder") {
+      motor_controller_->freezeEncoders(req.fault == "freeze_left_encoder",
+                                        req.fault == "freeze_right_encoder");
+    } else if (req.fault == "thaw_encoders") {
+      motor_controller_->freezeEncoders(false, false);
+    } else if (req.fault == "overcurrent_left" || req.fault == "clear_faults") {
+      motor_controller_->setInjectedFaults(
+          req.fault == "clear_faults" ? 0 : wheelchair_can::protocol::kFaultOvercurrentLeft);
+    } else {
+      res.success = false;
+    }
+    res.message = res.success ? "motor fault: " + req.fault : "unknown fault '" + req.fault + "'";
     NODELET_WARN("%s", res.message.c_str());
     return true;
   }
@@ -354,7 +379,7 @@ class SimulatorNodelet : public nodelet::Nodelet {
   nav_msgs::Path trajectory_;
   ros::Subscriber torque_sub_;
   ros::ServiceServer teleport_srv_, reset_srv_, add_obstacle_srv_, add_moving_obstacle_srv_,
-      clear_obstacles_srv_, laser_srv_, rear_laser_srv_;
+      clear_obstacles_srv_, laser_srv_, fault_srv_, rear_laser_srv_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_tf_;
 };

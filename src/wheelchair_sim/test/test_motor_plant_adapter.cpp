@@ -60,8 +60,8 @@ TEST(MotorPlantAdapter, TheEmulatedControllerOnTheFakeBusDrivesTheSimulator) {
       if (drive) {
         driver->send(protocol::encode(protocol::DriverHeartbeat{}));
         // Brake first (the controller starts latched), then enable.
-        driver->send(protocol::encode(
-            protocol::TorqueCommand{10.0, 10.0, sequence > 0, sequence == 0, sequence}));
+        driver->send(protocol::encode(protocol::TorqueCommand{
+            10.0, 10.0, sequence > 0, sequence == 0, sequence, protocol::timeTag(now)}));
         ++sequence;
       }
       controller.step(now);

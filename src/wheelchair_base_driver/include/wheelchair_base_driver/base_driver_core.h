@@ -1,14 +1,30 @@
-// The base driver without ROS: torque messages in, protocol frames out at a fixed rate,
-// encoder/status/heartbeat frames in, odometry and a status out. Time is injected (`now` [s]).
+// The base driver without ROS: the chair's own controller's commands and the safety
+// supervisor's permits in, protocol frames out at a fixed rate; encoder/status/heartbeat frames
+// in, odometry, a state and events out. Time is injected (`now` [s] on the bus clock; the wall
+// clock separately where a frozen bus clock must not hide a silent motor controller).
 //
-// Safety rules (every one ends in zero torque with the brake command):
-//  - no valid torque message for command_timeout (100 ms)    -> kCommandTimeout
-//  - no MC heartbeat for controller_timeout (200 ms) / never -> kControllerLost / kNoController
-//  - MC reports a fault bit or the fault state               -> kControllerFault
-//  - non-finite, out-of-range or stale torques                -> rejected, counted, brake
-//  - e-stop                                                   -> kEstop, latched until cleared
-// After any of these, motion resumes only with a torque message received after the condition
-// ended (no stale command can restart the chair).
+// The chair moves only when everything holds: a motor controller alive and healthy, a fresh
+// permit from the supervisor (sequence-numbered, renewed at its check rate), a fresh command
+// from the controller (stamped and sequence-numbered), no e-stop and no latched stop.
+//  - no command for command_timeout (100 ms)                   -> kCommandTimeout
+//  - no MC heartbeat for controller_timeout (200 ms) / never   -> kControllerLost / kNoController
+//  - MC reports a braking fault bit or the fault state          -> kControllerFault
+//  - no permit for permit_timeout (100 ms): the supervisor was unloaded, crashed or hangs
+//                                                                -> kNoPermit
+//  - non-finite, out-of-range, stale, future or replayed commands -> rejected, counted, brake
+//  - e-stop                                                      -> kEstop
+// Latched until the rider's release (riderRelease, through the HMI), each with a sentence:
+//  - e-stop; a torque command from a foreign publisher (onForeignCommand);
+//  - any of the faults above beginning while driving (the drive is interrupted: after a hang or a
+//    silence the chair never resumes on its own);
+//  - a corrupted command stream (the MC reports bad command frames, or protocol frames that do
+//    not decode arrive) while driving; a speed over max_speed; a wheel that does not count while
+//    the other turns (a frozen encoder); a motor controller silent in wall time while driving.
+// A latch that leaves the command path intact (foreign command, corrupted stream, overspeed) and
+// the supervisor's own stop (permit.stop) let the controller's controlled stop run for at most
+// stop_window seconds, then brake; the others brake at once. The driver also limits torque (a
+// larger one is rejected) and speed (torque that would speed the chair up beyond max_speed is
+// cut) itself.
 #pragma once
 
 #include <wheelchair_base_driver/driver_config.h>
@@ -18,7 +34,9 @@
 #include <wheelchair_can/transport.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,37 +47,87 @@ enum class DriverState {
   kControllerLost,     ///< MC heartbeat silent for controller_timeout
   kControllerFault,    ///< MC reports faults
   kEstop,              ///< latched emergency stop
-  kWaitingForCommand,  ///< no fresh torque message (start, after a fault or a rejection)
-  kCommandTimeout,     ///< torque messages stopped for command_timeout
-  kBraking,            ///< the torque message asks for the brake
+  kLatched,            ///< a latched stop (see above): braked until the rider's release
+  kNoPermit,           ///< no fresh permit from the safety supervisor
+  kWaitingForCommand,  ///< no fresh command (start, after a fault or a rejection)
+  kCommandTimeout,     ///< commands stopped for command_timeout
+  kSupervisorStop,     ///< the supervisor's stop, its controlled stop over: braked
+  kStopping,           ///< a controlled stop in progress: the controller's commands pass
+  kBraking,            ///< the command asks for the brake
   kDriving,            ///< torques are applied
 };
 const char* driverStateName(DriverState state);
 /// True for the states that are faults (reported as errors to the stack).
 bool isFault(DriverState state);
+/// True for the states in which the controller's torques reach the motors.
+bool isMoving(DriverState state);
 
-enum class TorqueVerdict { kAccepted = 0, kNonFinite, kOutOfRange, kStale };
+enum class TorqueVerdict {
+  kAccepted = 0,
+  kNonFinite,
+  kOutOfRange,
+  kStale,
+  kFuture,    ///< stamped ahead of the driver's clock
+  kReplayed,  ///< a sequence number not above the last one of the same controller
+  kUnstamped,
+};
 const char* torqueVerdictName(TorqueVerdict verdict);
+
+/// Why a stop latched; each has a sentence for the rider.
+enum class LatchCause {
+  kNone = 0,
+  kInterrupted,        ///< a fault began while driving (detail: which)
+  kForeignCommand,     ///< a torque command from a publisher that is not the chair's controller
+  kCorruptStream,      ///< bad command frames / undecodable protocol frames while driving
+  kOverspeed,          ///< faster than max_speed
+  kEncoderFault,       ///< a wheel does not count while the other turns under torque
+  kControllerStalled,  ///< the MC silent for controller_wall_timeout of wall time while driving
+};
+const char* latchCauseName(LatchCause cause);
+
+/// A command of the chair's own controller.
+struct DriveInput {
+  double left = 0.0, right = 0.0;  ///< [N m], positive forward
+  bool brake = true;
+  double stamp = 0.0;          ///< [s] when it was computed (required)
+  std::uint64_t sequence = 0;  ///< strictly increasing within one session
+  std::uint64_t session = 0;   ///< the controller's attachment (a new one restarts the sequence)
+};
+
+/// What the stack is told: on each change of (fault, latched, sentence).
+struct DriverEvent {
+  double stamp = 0.0;
+  bool fault = false;
+  bool latched = false;
+  std::string sentence;  ///< for the rider ("" when all is well)
+  std::string detail;    ///< for the log
+};
 
 struct DriverCounters {
   std::uint64_t torque_messages = 0;
   std::uint64_t rejected_non_finite = 0;
   std::uint64_t rejected_out_of_range = 0;
-  std::uint64_t rejected_stale = 0;
+  std::uint64_t rejected_stale = 0;  ///< stale, future, replayed or unstamped
   std::uint64_t frames_sent = 0;
   std::uint64_t send_failures = 0;
   std::uint64_t frames_received = 0;
   std::uint64_t error_frames = 0;
   std::array<std::uint64_t, 8>
-      decode_errors{};                 ///< indexed by wheelchair_can::protocol::DecodeError
-  std::uint64_t foreign_commands = 0;  ///< torque/heartbeat frames of another driver on the bus
-  std::uint64_t encoder_lost = 0;      ///< encoder frames skipped (sequence gaps)
+      decode_errors{};                   ///< indexed by wheelchair_can::protocol::DecodeError
+  std::uint64_t foreign_commands = 0;    ///< torque/heartbeat frames of another driver on the bus
+  std::uint64_t foreign_publishers = 0;  ///< torque messages of another node (onForeignCommand)
+  std::uint64_t encoder_lost = 0;        ///< encoder frames skipped (sequence gaps)
   std::uint64_t encoder_duplicated = 0;
   std::uint64_t encoder_reordered = 0;
   std::uint64_t encoder_implausible = 0;
+  std::uint64_t permits = 0;
+  std::uint64_t permits_refused = 0;    ///< stale, replayed
   std::uint64_t command_timeouts = 0;   ///< transitions into kCommandTimeout
   std::uint64_t heartbeat_losses = 0;   ///< transitions into kControllerLost
   std::uint64_t controller_faults = 0;  ///< transitions into kControllerFault
+  std::uint64_t permit_losses = 0;      ///< transitions into kNoPermit
+  std::uint64_t latches = 0;
+  std::uint64_t speed_limited = 0;  ///< commands whose torque was cut at max_speed
   std::uint64_t estops = 0;
 };
 
@@ -68,18 +136,33 @@ class BaseDriverCore {
   /// Throws std::invalid_argument if `config` is not valid (DriverConfig::validate).
   BaseDriverCore(const DriverConfig& config, wheelchair_can::CanTransport& transport);
 
-  /// A wheelchair_msgs/WheelTorques message received at `now`; `stamp` is its header time
-  /// (<= 0: unknown, not checked). Sends the resulting frame immediately.
-  TorqueVerdict onTorqueMessage(double left, double right, bool brake, double stamp, double now);
+  /// A command of the chair's own controller received at `now`; sends the resulting frame.
+  TorqueVerdict onCommand(const DriveInput& command, double now);
+  /// The supervisor's permit (DrivePermit): fresh for permit_timeout from `now` if its stamp is
+  /// not older than that and its sequence is above the last one of the same session.
+  void onPermit(std::uint64_t sequence, std::uint64_t session, double stamp, bool stop, double now);
+  /// A torque command published by someone else (`who`): reported and braked on, latched.
+  void onForeignCommand(const std::string& who, double now);
   void engageEstop(double now);
-  void clearEstop(double now);
-  /// Drains the transport, runs the watchdogs, sends due frames. Call at >= 200 Hz.
-  void spinOnce(double now);
+  /// The rider's own command to go on: clears the e-stop and a latched stop. Motion resumes
+  /// only with a command received after it (and a fresh permit).
+  void riderRelease(double now);
+  /// Drains the transport, runs the watchdogs, sends due frames. Call at >= 100 Hz. `wall_now`
+  /// (NaN: unknown) dates the MC's frames for checkWallLiveness.
+  void spinOnce(double now, double wall_now = NAN);
+  /// The MC silent for controller_wall_timeout of wall time while driving (the bus clock may
+  /// stand still: a simulator that stopped) latches kControllerStalled and brakes.
+  void checkWallLiveness(double now, double wall_now);
   /// The receive path for one frame (spinOnce calls it for every received frame).
   void processFrame(const wheelchair_can::CanFrame& frame, double now);
+  /// The event since the last call, if the state as the stack sees it changed.
+  std::optional<DriverEvent> takeEvent();
 
   DriverState state() const { return state_; }
   bool estopLatched() const { return estop_; }
+  LatchCause latchCause() const { return latch_.cause; }
+  /// The sentence for the rider of the current stop ("" when driving is allowed).
+  std::string sentence() const;
   const DriverCounters& counters() const { return counters_; }
   const OdometryState& odometry() const { return odometry_.state(); }
   /// The last torque command put on the bus.
@@ -88,14 +171,26 @@ class BaseDriverCore {
   wheelchair_can::protocol::ControllerState controllerState() const { return mc_state_; }
   const std::string& lastBusError() const { return last_bus_error_; }
   const std::string& lastRejection() const { return last_rejection_; }
+  const std::string& latchDetail() const { return latch_.detail; }
   const DriverConfig& config() const { return config_; }
 
  private:
-  DriverState evaluate(double now);
+  struct Latch {
+    LatchCause cause = LatchCause::kNone;
+    bool brake_now = true;  ///< false: the controller's controlled stop may run first
+    double since = 0.0;
+    std::string sentence, detail;
+  };
+  DriverState evaluate(double now) const;
+  bool permitFresh(double now) const;
+  void latch(LatchCause cause, bool brake_now, const std::string& sentence,
+             const std::string& detail, double now);
   void update(double now, bool force_send);
-  void sendCommand();
+  void checkMotion(double now);
+  void sendCommand(double now);
   void sendHeartbeat();
   void handleEncoder(const wheelchair_can::protocol::EncoderCounts& counts, double stamp);
+  void noteEvent(double now);
 
   DriverConfig config_;
   wheelchair_can::CanTransport& transport_;
@@ -104,18 +199,36 @@ class BaseDriverCore {
 
   DriverState state_ = DriverState::kNoController;
   bool estop_ = false;
+  Latch latch_;
   double block_time_ = -1e300;  ///< last time a blocking condition held
   double last_message_time_ = -1e300;
   bool has_message_ = false;
   bool message_brake_ = true;
   double message_left_ = 0.0, message_right_ = 0.0;
+  double message_stamp_ = 0.0;
+  std::uint64_t command_session_ = 0, command_sequence_in_ = 0;
+  bool has_command_sequence_ = false;
+  bool sticky_brake_ = false;  ///< a brake command during a stop: braked until it ends
+  bool at_speed_limit_ = false;
+
+  bool has_permit_ = false;
+  double permit_time_ = -1e300;
+  bool permit_stop_ = false;
+  double permit_stop_since_ = 0.0;
+  std::uint64_t permit_session_ = 0, permit_sequence_ = 0;
 
   bool has_heartbeat_ = false;
   double last_heartbeat_time_ = 0.0;
+  double last_frame_wall_ = NAN;    ///< wall time of the last MC heartbeat
+  double spin_wall_ = NAN;          ///< wall time of the spinOnce in progress
+  double last_spin_time_ = -1e300;  ///< end of the last spinOnce [s]
   wheelchair_can::protocol::ControllerState mc_state_ =
       wheelchair_can::protocol::ControllerState::kInit;
   std::uint16_t mc_faults_ = 0;
   wheelchair_can::SequenceTracker encoder_sequence_;
+  double encoder_check_left_since_ = NAN, encoder_check_right_since_ = NAN;
+  double overspeed_since_ = NAN;  ///< since when the speed is within max_speed
+  double last_left_angle_ = 0.0, last_right_angle_ = 0.0;
 
   wheelchair_can::protocol::TorqueCommand last_sent_;
   std::uint8_t command_sequence_ = 0;
@@ -125,6 +238,8 @@ class BaseDriverCore {
   DriverCounters counters_;
   std::string last_bus_error_;
   std::string last_rejection_;
+  bool event_pending_ = false;
+  DriverEvent event_, last_event_;
 };
 
 }  // namespace wheelchair_base_driver

@@ -1,5 +1,7 @@
-// The ROS face of the base driver: WheelTorques in, CAN frames out through a transport;
-// /odom, tf odom->base_link, /joint_states, diagnostics and a status out; e-stop in.
+// The ROS face of the base driver: the chair's controller's commands and the supervisor's
+// permits in through the process's drive channel (wheelchair_ros/drive_channel.h), CAN frames
+// out through a transport; /odom, tf odom->base_link, /joint_states, diagnostics and a status
+// out; e-stop in. /wheel_torques is only watched: a message from another node latches a stop.
 #pragma once
 
 #include <wheelchair_base_driver/base_driver_core.h>
@@ -16,6 +18,7 @@
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_msgs/WheelTorques.h>
+#include <wheelchair_ros/drive_channel.h>
 
 #include <memory>
 #include <mutex>
@@ -33,11 +36,18 @@ class BaseDriverNodelet : public nodelet::Nodelet {
   /// Throws wheelchair_core::ConfigError (the nodelet is then refused).
   BaseDriverSettings loadSettings();
   void startEmulatedController();
-  void onTorques(const wheelchair_msgs::WheelTorques::ConstPtr& msg);
+  /// The chair's own controller (drive channel).
+  bool onCommand(const wheelchair_ros::DriveCommand& command);
+  /// Any node's /wheel_torques: the chair's own (this process) are the controller's, for logs;
+  /// another publisher's latch a stop.
+  void onTorques(const ros::MessageEvent<wheelchair_msgs::WheelTorques const>& event);
   void onEstopTopic(const std_msgs::Bool::ConstPtr& msg);
   bool onEstopService(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool onClearEstopService(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   void onTimer(const ros::TimerEvent& event);
+  void onWallTimer(const ros::WallTimerEvent& event);
+  /// Tells the supervisor and the controller (drive channel) what changed, outside the lock.
+  void reportEvents();
   void publishOdometry(const ros::Time& stamp);
   void publishStatus();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
@@ -56,6 +66,10 @@ class BaseDriverNodelet : public nodelet::Nodelet {
   ros::Publisher odom_pub_, joint_pub_, status_pub_;
   ros::ServiceServer estop_srv_, clear_srv_;
   ros::Timer timer_;
+  ros::WallTimer wall_timer_;
+  std::mutex report_mutex_;  // keeps the channel's reports in order
+  std::shared_ptr<wheelchair_ros::DriveChannel> channel_;
+  std::unique_ptr<wheelchair_ros::DriveChannel::Registration> registration_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_;
   std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
   double last_odom_stamp_ = -1.0;

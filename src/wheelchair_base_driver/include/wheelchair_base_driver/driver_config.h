@@ -1,6 +1,8 @@
-// What the driver core needs to know: the chair's wheels and encoders, the torque limit, the
-// command and heartbeat rates and the two watchdogs. One parameter pattern
-// (wheelchair_core/config.h): defaults here, validate(), and the keys in readDriverConfig.
+// What the driver core needs to know: the chair's wheels and encoders, its torque and speed
+// limits, the command and heartbeat rates, the watchdogs (commands, permits, the motor
+// controller on the bus clock and on the wall clock) and the checks that latch a stop. One
+// parameter pattern (wheelchair_core/config.h): defaults here, validate(), and the keys in
+// readDriverConfig.
 #pragma once
 
 #include <wheelchair_base_driver/encoder_odometry.h>
@@ -22,14 +24,31 @@ struct DriverConfig {
   double heartbeat_period = 0.05;   ///< driver heartbeat period (20 Hz)
   double command_timeout = 0.1;     ///< torque message watchdog [s]
   double controller_timeout = 0.2;  ///< MC heartbeat watchdog [s]
+  /// [m/s] the chair's limit (the chair file's max_speed): faster latches a stop; torque that
+  /// would speed it up further is cut.
+  double max_speed = 0.0;
+  /// [s] a permit of the safety supervisor is fresh this long (its check period is 20 ms).
+  double permit_timeout = 0.1;
+  /// [s] the longest controlled stop the controller may run after a stop that leaves the command
+  /// path intact (the supervisor's, a foreign command, a corrupted stream), then the brake: from
+  /// 1.5 m/s at 0.5 m/s^2 with jerk-limited ramps about 3.5 s.
+  double stop_window = 4.0;
+  /// [s of wall time] the MC's heartbeats may stop this long while driving before a latched stop
+  /// (the bus clock may stand still with the process that owns it: a stopped simulator).
+  double controller_wall_timeout = 1.0;
+  /// A wheel whose count does not change for encoder_check_time [s] while the other turns faster
+  /// than encoder_check_rate [rad/s] during a drive has a failed encoder: latched stop.
+  double encoder_check_time = 0.3;
+  double encoder_check_rate = 1.0;
 
   /// "" if usable, else every problem, each naming its value.
   std::string validate() const;
 };
 
-/// Keys: counts_per_rev, max_wheel_rate, max_torque, command_rate [Hz] (1 / command_period),
-/// command_timeout, controller_timeout. The wheel radius and half track are not keys: they are
-/// the chair file's.
+/// Keys: counts_per_rev, max_wheel_rate, max_torque, max_speed, command_rate [Hz]
+/// (1 / command_period), command_timeout, controller_timeout, permit_timeout, stop_window,
+/// controller_wall_timeout, encoder_check_time, encoder_check_rate. The wheel radius and half
+/// track are not keys: they are the chair file's.
 void readDriverConfig(wheelchair_core::ConfigReader& reader, DriverConfig& config);
 
 }  // namespace wheelchair_base_driver

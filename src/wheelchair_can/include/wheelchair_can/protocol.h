@@ -31,6 +31,9 @@ constexpr std::uint8_t kHeartbeatLength = 3;
 constexpr double kTorqueLsb = 0.01;  ///< N m per bit of the int16 torque fields
 constexpr double kMaxEncodableTorque = 32767 * kTorqueLsb;  ///< 327.67 N m, saturates beyond
 constexpr std::uint32_t kEncoderModulus = 1u << 24;         ///< counts wrap modulo 2^24
+/// [s] one tick of the torque command's time tag (byte 5): its creation time on the bus clock in
+/// 4 ms ticks modulo 256 (ages are unambiguous within +-0.512 s; the watchdog is 0.1 s).
+constexpr double kTimeTagTick = 0.004;
 
 // ---- torque command flags (byte 4) ----
 constexpr std::uint8_t kFlagEnable = 0x01;  ///< power stage on; torques are applied
@@ -50,7 +53,11 @@ enum FaultBit : std::uint16_t {
   kFaultBadCommand = 1u << 9,           ///< a torque command failed to decode (CRC, length)
   kFaultBrake = 1u << 10,               ///< brake did not engage/release
   kFaultHardwareEstop = 1u << 11,       ///< the chair's own stop switch is pressed
+  kFaultStaleCommand = 1u << 12,        ///< a drive command older than the command timeout
 };
+/// Reported but not braking by itself: the MC drops the bad frame and keeps the last valid
+/// command (under its watchdog); the driver ends the drive with a controlled stop.
+constexpr std::uint16_t kReportOnlyFaults = kFaultBadCommand;
 constexpr int kFaultBitCount = 16;
 /// Name of fault bit `bit` (0..15); reserved bits are named "reserved_N".
 std::string faultBitName(int bit);
@@ -73,6 +80,7 @@ struct TorqueCommand {
   bool enable = false;
   bool brake = true;
   std::uint8_t sequence = 0;
+  std::uint8_t time_tag = 0;  ///< timeTag() of the time the command was decided
 };
 struct EncoderCounts {
   std::uint32_t left = 0;   ///< counts modulo 2^24, increasing when the wheel rolls forward
@@ -116,6 +124,12 @@ double rawToTorque(std::int16_t raw);
 
 /// Signed difference a - b of two 24-bit wrapping counters, in [-2^23, 2^23).
 std::int32_t encoderDelta(std::uint32_t a, std::uint32_t b);
+
+/// The time tag of `time` [s on the bus clock]: floor(time / kTimeTagTick) modulo 256.
+std::uint8_t timeTag(double time);
+/// [s] how long before `now` a command tagged `tag` was decided, in [-0.512, 0.508) (a multiple
+/// of the tick: +-1 tick of quantization).
+double timeTagAge(std::uint8_t tag, double now);
 
 /// Encoders. A command with non-finite torque is encoded as zero torque with the brake set.
 CanFrame encode(const TorqueCommand& message);

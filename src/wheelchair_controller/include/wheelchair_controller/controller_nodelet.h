@@ -1,7 +1,11 @@
-// ROS wrapper of PathTracker: /plan, tf map->base_link and /odom in; /wheel_torques out at a
-// fixed rate, plus ~reference, ~tracking_error and ~status for rviz and tests. Stops (controlled)
-// on /safety/stop (latched Bool), /user_stop (Empty) and /localization/status
-// (wheelchair_msgs/LocalizationStatus) not `localized`.
+// ROS wrapper of PathTracker: /plan, tf map->base_link and /odom in; wheel torques out at a
+// fixed rate to the base driver through the process's drive channel (wheelchair_ros/
+// drive_channel.h: stamped, sequence-numbered; the only torque input of the driver), a copy on
+// /wheel_torques for logs (and the simulator's direct mode), plus ~reference, ~tracking_error and
+// ~status for rviz and tests. Stops (controlled) on the supervisor's hold (drive channel: held
+// until it lifts it, i.e. the rider's release; /safety/stop is only its output), the driver's
+// latched stop (drive channel), a gap in its own control steps (a hang), /user_stop (Empty) and
+// /localization/status (wheelchair_msgs/LocalizationStatus) not `localized`.
 // A path's reference is built on a worker thread; the control step only swaps it in.
 // ~path_status (actionlib_msgs/GoalStatus, latched) says the same as ~status and which path it
 // concerns (goal_id.stamp = that /plan's header.stamp): an end status of an older path is not
@@ -24,6 +28,7 @@
 #include <std_msgs/Float64.h>
 #include <std_msgs/String.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
+#include <wheelchair_ros/drive_channel.h>
 
 #include <condition_variable>
 #include <cstdint>
@@ -55,7 +60,10 @@ class ControllerNodelet : public nodelet::Nodelet {
     ros::Time stamp;
   };
   void onPath(const nav_msgs::Path::ConstPtr& msg);
-  void onSafetyStop(const std_msgs::Bool::ConstPtr& msg);
+  /// The supervisor's verdict (drive channel): a hold while it says stop.
+  void onHold(const wheelchair_ros::SafetyHold& hold);
+  /// The driver's state (drive channel): a latched stop ends the drive.
+  void onDriverReport(const wheelchair_ros::DriverReport& report);
   void onSpeedLimit(const std_msgs::Float64::ConstPtr& msg);
   void onUserStop(const std_msgs::Empty::ConstPtr& msg);
   void onLocalizationStatus(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg);
@@ -63,7 +71,8 @@ class ControllerNodelet : public nodelet::Nodelet {
   void onOdometry(const nav_msgs::Odometry::ConstPtr& msg);
   void onTimer(const ros::TimerEvent& event);
   std::optional<PoseMeasurement> lookupPose();
-  void publish(const TrackerOutput& out, const ros::Time& now);
+  /// Publishes the step's topics; returns the command for the driver (submitted unlocked).
+  wheelchair_ros::DriveCommand publish(const TrackerOutput& out, const ros::Time& now);
   void publishStatus(const TrackerOutput& out);
   /// The pending path is decided (swapped in, refused, or dropped): the status now concerns it.
   void settlePending();
@@ -74,13 +83,20 @@ class ControllerNodelet : public nodelet::Nodelet {
   std::string map_frame_, base_frame_;
   WheelSpeedMeasurement wheels_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
-  ros::Subscriber path_sub_, odom_sub_, safety_sub_, user_stop_sub_, localization_sub_;
+  ros::Subscriber path_sub_, odom_sub_, user_stop_sub_, localization_sub_;
   ros::Subscriber speed_limit_sub_;
   ros::Publisher torque_pub_, reference_pub_, error_pub_, status_pub_, path_status_pub_;
   ros::Timer timer_;
   std::string last_status_, last_path_status_;
   ros::Time status_path_stamp_, last_path_stamp_;  ///< the path the tracker's state concerns
   std::optional<PendingPath> pending_;
+  std::shared_ptr<wheelchair_ros::DriveChannel> channel_;
+  std::unique_ptr<wheelchair_ros::DriveChannel::Registration> registration_;
+  std::optional<std::string> safety_hold_;  ///< the supervisor's hold in effect (its sentence)
+  std::uint64_t command_sequence_ = 0;
+  double gap_timeout_ = 0.1, wall_gap_timeout_ = 0.5;
+  ros::Time last_step_;
+  ros::WallTime last_wall_step_;
 
   // Worker: builds the latest requested path's reference; mutex_ guards it too.
   std::condition_variable request_cv_;

@@ -11,6 +11,7 @@
 #include <pluginlib/class_list_macros.hpp>
 
 #include <cmath>
+#include <cstdio>
 
 namespace wheelchair_controller {
 
@@ -49,6 +50,7 @@ uint8_t goalStatusOf(TrackerState state) {
 }  // namespace
 
 ControllerNodelet::~ControllerNodelet() {
+  registration_.reset();  // no hold or report reaches this nodelet any more
   {
     std::lock_guard<std::mutex> lock(mutex_);
     shutdown_ = true;
@@ -59,13 +61,28 @@ ControllerNodelet::~ControllerNodelet() {
 
 void ControllerNodelet::onInit() {
   ros::NodeHandle& nh = getNodeHandle();
+  // The chair's controller: the only one that commands the base driver (a second one in the
+  // process is refused, before anything is set up).
+  channel_ = wheelchair_ros::driveChannel();
+  try {
+    registration_ = channel_->attachController(
+        {[this](const wheelchair_ros::SafetyHold& h) { onHold(h); },
+         [this](const wheelchair_ros::DriverReport& r) { onDriverReport(r); }});
+  } catch (const std::logic_error& e) {
+    throw wheelchair_core::ConfigError(getName() + ": " + e.what());
+  }
   const ControllerParameters params = wheelchair_ros::loadParameters<ControllerParameters>(
       getPrivateNodeHandle(), readControllerParameters);
   ros::NodeHandle& pnh = getPrivateNodeHandle();
   chair_ = wheelchair_description::loadChairParams(params.chair_file);
-  tracker_ = std::make_unique<PathTracker>(chair_, params.tracker);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);  // the channel may call before onInit ends
+    tracker_ = std::make_unique<PathTracker>(chair_, params.tracker);
+  }
   map_frame_ = params.map_frame;
   base_frame_ = params.base_frame;
+  gap_timeout_ = params.gap_timeout;
+  wall_gap_timeout_ = params.wall_gap_timeout;
 
   tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
   torque_pub_ = nh.advertise<wheelchair_msgs::WheelTorques>("wheel_torques", 10);
@@ -75,7 +92,6 @@ void ControllerNodelet::onInit() {
   path_status_pub_ = pnh.advertise<actionlib_msgs::GoalStatus>("path_status", 10, true);
   worker_ = std::thread(&ControllerNodelet::buildReferences, this);
   path_sub_ = nh.subscribe("plan", 1, &ControllerNodelet::onPath, this);
-  safety_sub_ = nh.subscribe("safety/stop", 1, &ControllerNodelet::onSafetyStop, this);
   speed_limit_sub_ = nh.subscribe("safety/speed_limit", 1, &ControllerNodelet::onSpeedLimit, this);
   user_stop_sub_ = nh.subscribe("user_stop", 5, &ControllerNodelet::onUserStop, this);
   localization_sub_ =
@@ -130,13 +146,25 @@ void ControllerNodelet::buildReferences() {
   }
 }
 
-void ControllerNodelet::onSafetyStop(const std_msgs::Bool::ConstPtr& msg) {
+void ControllerNodelet::onHold(const wheelchair_ros::SafetyHold& hold) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (msg->data) {
-    tracker_->hold("safety", "safety stop (supervisor)");
-  } else {
+  if (!tracker_) return;  // not set up yet: the supervisor says it again at its next check
+  if (hold.stop) {
+    const std::string reason = "safety stop: " + hold.sentence;
+    if (safety_hold_ && *safety_hold_ == reason) return;  // the same verdict again
+    safety_hold_ = reason;
+    tracker_->hold("safety", reason);
+  } else if (safety_hold_) {
+    safety_hold_.reset();
     tracker_->release("safety");
   }
+}
+
+void ControllerNodelet::onDriverReport(const wheelchair_ros::DriverReport& report) {
+  if (!report.latched) return;  // faults that end no drive (at rest) are the supervisor's news
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!tracker_) return;  // nothing to end yet
+  tracker_->abort("the motors stopped: " + report.sentence);
 }
 
 void ControllerNodelet::onSpeedLimit(const std_msgs::Float64::ConstPtr& msg) {
@@ -181,9 +209,32 @@ std::optional<PoseMeasurement> ControllerNodelet::lookupPose() {
 
 void ControllerNodelet::onTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
+  const ros::WallTime wall = ros::WallTime::now();
   const std::optional<PoseMeasurement> pose = lookupPose();
-  std::lock_guard<std::mutex> lock(mutex_);
-  publish(tracker_->update(now.toSec(), pose, wheels_), now);
+  wheelchair_ros::DriveCommand command;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    // A hang (the process stopped, starved, or its clock stood still): the reference ran on while
+    // the motors braked. The drive ends; the chair restarts from rest on the rider's command.
+    const TrackerState state = tracker_->state();
+    const bool moving = state == TrackerState::kAligning || state == TrackerState::kTracking ||
+                        state == TrackerState::kRotatingToGoal;
+    if (moving && !last_step_.isZero()) {
+      const double gap = (now - last_step_).toSec(), wall_gap = (wall - last_wall_step_).toSec();
+      if (gap > gap_timeout_ || wall_gap > wall_gap_timeout_) {
+        char reason[96];
+        std::snprintf(reason, sizeof(reason), "control steps paused for %.2f s",
+                      std::max(gap, wall_gap));
+        tracker_->abort(reason);
+      }
+    }
+    last_step_ = now;
+    last_wall_step_ = wall;
+    command = publish(tracker_->update(now.toSec(), pose, wheels_), now);
+  }
+  // To the base driver of this process (the only torque input it takes), after unlocking: the
+  // channel's hold and report calls come into this nodelet under the channel's lock.
+  channel_->submit(command);
 }
 
 void ControllerNodelet::settlePending() {
@@ -215,7 +266,15 @@ void ControllerNodelet::publishStatus(const TrackerOutput& out) {
   last_path_stamp_ = status_path_stamp_;
 }
 
-void ControllerNodelet::publish(const TrackerOutput& out, const ros::Time& now) {
+wheelchair_ros::DriveCommand ControllerNodelet::publish(const TrackerOutput& out,
+                                                        const ros::Time& now) {
+  wheelchair_ros::DriveCommand command;
+  command.right = out.command.torque(0);
+  command.left = out.command.torque(1);
+  command.brake = out.command.brake;
+  command.stamp = now.toSec();
+  command.sequence = ++command_sequence_;
+  // The same, for logs and rviz (and the simulator's direct mode in the controller's tests).
   wheelchair_msgs::WheelTorques cmd;
   cmd.header.stamp = now;
   cmd.header.frame_id = base_frame_;
@@ -225,7 +284,7 @@ void ControllerNodelet::publish(const TrackerOutput& out, const ros::Time& now) 
   torque_pub_.publish(cmd);
 
   publishStatus(out);
-  if (!out.has_reference) return;
+  if (!out.has_reference) return command;
   geometry_msgs::PointStamped ref;
   ref.header.stamp = now;
   ref.header.frame_id = map_frame_;
@@ -238,6 +297,7 @@ void ControllerNodelet::publish(const TrackerOutput& out, const ros::Time& now) 
   err.vector.y = out.reference.position.y() - out.y.y();
   err.vector.z = out.body_deviation;  // axle centre's distance from the planned path
   error_pub_.publish(err);
+  return command;
 }
 
 }  // namespace wheelchair_controller

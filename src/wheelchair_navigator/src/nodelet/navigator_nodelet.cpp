@@ -17,6 +17,7 @@
 #include <wheelchair_msgs/SafetyStatus.h>
 #include <wheelchair_navigator/navigator.h>
 #include <wheelchair_ros/conversions.h>
+#include <wheelchair_ros/drive_channel.h>
 #include <wheelchair_ros/parameters.h>
 #include <wheelchair_ros/shared_tf.h>
 
@@ -151,7 +152,6 @@ class NavigatorNodelet : public nodelet::Nodelet {
 
     path_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
     state_pub_ = nh.advertise<NavigatorState>("navigator/state", 5, true);
-    rider_command_pub_ = nh.advertise<geometry_msgs::PoseStamped>("navigator/rider_command", 5);
     simple_goal_pub_ = nh.advertise<move_base_msgs::MoveBaseActionGoal>("move_base/goal", 1);
     planner_ = nh.serviceClient<wheelchair_msgs::MakePlan>(params_.planner_service);
     planner_thread_ = std::thread(&NavigatorNodelet::plannerLoop, this);
@@ -290,6 +290,7 @@ class NavigatorNodelet : public nodelet::Nodelet {
     s.sentence = msg->sentence;
     s.detail = msg->detail;
     std::lock_guard<std::mutex> lock(mutex_);
+    last_safety_cause_ = s.stop ? s.cause : SafetyCause::kNone;
     handle(navigator_->onSafety(s, ros::Time::now().toSec()));
   }
 
@@ -341,15 +342,14 @@ class NavigatorNodelet : public nodelet::Nodelet {
     }
   }
 
-  /// The rider's command releases the supervisor's latch. Today that is a goal on the topic the
-  /// supervisor listens to (its move_base_simple/goal, remapped to navigator/rider_command in the
-  /// bring-up); issue 20 replaces it with an in-process call on the rider's path.
+  /// The navigator, carrying on a drive, may release only an obstacle stop (something was in
+  /// the way: the supervisor stops again at its next check if it still is). Every other latched
+  /// stop (the rider's own stop, a sensor or driver fault, a lost position) waits for the
+  /// rider's own command: the HMI releases it in this process when the rider chooses a
+  /// destination (wheelchair_ros::releaseStopByRider). A goal from another node never does.
   void releaseSafetyLatch() {
-    geometry_msgs::PoseStamped command;
-    command.header.frame_id = params_.map_frame;
-    command.header.stamp = ros::Time::now();
-    command.pose = wheelchair_ros::toPoseMsg(navigator_->feedback().goal);
-    rider_command_pub_.publish(command);
+    if (last_safety_cause_ != SafetyCause::kObstacle) return;
+    wheelchair_ros::releaseStopByRider("navigator: checking the way again");
   }
 
   void publishPath(const PathCommand& command) {
@@ -538,7 +538,8 @@ class NavigatorNodelet : public nodelet::Nodelet {
 
   std::unique_ptr<MoveBaseServer> move_base_;
   std::unique_ptr<NavigateServer> navigate_;
-  ros::Publisher path_pub_, state_pub_, rider_command_pub_, simple_goal_pub_;
+  ros::Publisher path_pub_, state_pub_, simple_goal_pub_;
+  SafetyCause last_safety_cause_ = SafetyCause::kNone;
   std::vector<ros::Subscriber> subs_;
   ros::Timer timer_;
 };

@@ -14,6 +14,7 @@
 #include <sensor_msgs/LaserScan.h>
 #include <wheelchair_core/laser_scan.h>
 #include <wheelchair_core/localization_status.h>
+#include <wheelchair_core/map_limits.h>
 #include <wheelchair_core/occupancy_map.h>
 #include <wheelchair_core/pose2d.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
@@ -65,9 +66,15 @@ nav_msgs::MapMetaData toMapMetaData(const wheelchair_core::OccupancyMap& map,
                                     const ros::Time& load_time);
 nav_msgs::OccupancyGrid toOccupancyGrid(const wheelchair_core::OccupancyMap& map,
                                         const std::string& frame_id, const ros::Time& stamp);
-/// Throws std::invalid_argument when the message's data size differs from width x height, the
-/// resolution is not finite and positive, or the origin is not finite.
-wheelchair_core::OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg);
+/// "" if the grid is usable, else why not (wheelchair_core::mapProblem: no cells, more than
+/// limits.max_cells, data size differing from width x height, resolution not finite and
+/// positive, origin not finite, a cell value outside -1..100). Every consumer of /map checks
+/// here before it copies or prepares anything: any node can publish a map.
+std::string occupancyGridProblem(const nav_msgs::OccupancyGrid& msg,
+                                 const wheelchair_core::MapLimits& limits = {});
+/// Throws std::invalid_argument with occupancyGridProblem()'s reason when the grid is not usable.
+wheelchair_core::OccupancyMap fromOccupancyGrid(const nav_msgs::OccupancyGrid& msg,
+                                                const wheelchair_core::MapLimits& limits = {});
 
 /// The localizer's verdict with the rider's sentence of its state (wheelchair_core::riderSentence).
 wheelchair_msgs::LocalizationStatus toLocalizationStatusMsg(

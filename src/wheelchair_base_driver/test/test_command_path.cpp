@@ -1,0 +1,338 @@
+// Issue 20's command path at the driver core, on a fake bus against the emulated motor
+// controller with injected time: only the chair's own controller with a fresh permit of a live
+// supervisor moves the wheels; a foreign command, a vanished supervisor, a hang, a corrupted
+// stream, an overspeed, a frozen encoder or a silent motor controller end the drive in one
+// latched stop with the rider's sentence, released only by the rider.
+#include "harness.h"
+
+#include <wheelchair_can_testing/random_frames.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace wheelchair_base_driver {
+namespace {
+
+namespace protocol = wheelchair_can::protocol;
+using test::CanFrame;
+using test::Harness;
+
+/// The chair's controller as the driver sees it: torques every 20 ms; when the driver latches a
+/// stop it runs a controlled stop (torque against the motion) and brakes at rest, like the
+/// controller's ControlledStop; the plant's brake engagements are counted.
+struct Drive {
+  explicit Drive(Harness& harness) : h(harness) {}
+  void run(double duration, double torque, const std::function<void()>& each = {}) {
+    h.run(duration, 0.001, [&] {
+      if (each) each();
+      if (h.now >= next - 1e-9) {
+        next = h.now + 0.02;
+        const bool stopping = h.driver.latchCause() != LatchCause::kNone || h.stop;
+        if (!stopping) {
+          h.torque(torque, torque);
+        } else {
+          const double rate = 0.5 * (h.plant.leftRate() + h.plant.rightRate());
+          const bool at_rest = std::abs(rate) < 0.05;
+          const double brake_torque = std::clamp(-2.0 * rate, -3.0, 3.0);  // ~0.5 m/s^2
+          h.torque(at_rest ? 0.0 : brake_torque, at_rest ? 0.0 : brake_torque, at_rest);
+        }
+      }
+      const bool braked = h.plant.braked();
+      if (braked && !was_braked) {
+        ++brake_engagements;
+        last_engagement = h.now;
+        rate_at_engagement = rate_before;
+      }
+      rate_before = std::abs(h.plant.leftRate());
+      if (!braked && was_braked) ++brake_releases;
+      was_braked = braked;
+      if (h.plant.braked() == false) max_rate = std::max(max_rate, std::abs(h.plant.leftRate()));
+    });
+  }
+  void resetCounts() { brake_engagements = brake_releases = 0; }
+  Harness& h;
+  double next = 0.0;
+  bool was_braked = true;
+  int brake_engagements = 0, brake_releases = 0;
+  double last_engagement = -1.0, max_rate = 0.0;
+  double rate_before = 0.0, rate_at_engagement = -1.0;  ///< [rad/s] when the brake engaged
+};
+
+struct CommandPathTest : ::testing::Test {
+  void SetUp() override {
+    h.run(0.1);
+    ASSERT_EQ(h.driver.state(), DriverState::kWaitingForCommand);
+  }
+  Harness h;
+  Drive drive{h};
+};
+
+// The issue: a second node publishing 20 N m at 500 Hz to the idle chair pushed it to 1.84 m/s.
+// The driver takes torques only from its controller; a foreign publisher is braked on, latched.
+TEST_F(CommandPathTest, AForeignTorquePublisherLatchesABrakedStopUntilTheRidersRelease) {
+  h.driver.onForeignCommand("/intruder", h.now);
+  EXPECT_EQ(h.driver.state(), DriverState::kLatched);
+  EXPECT_EQ(h.driver.sentence(), "another program tried to drive the chair");
+  drive.run(1.0, 20.0);  // the chair's own controller keeps commanding: the latch holds
+  EXPECT_TRUE(h.plant.braked());
+  EXPECT_LT(h.plant.wheelAngles().left, 1e-9);
+  EXPECT_EQ(h.driver.counters().foreign_publishers, 1u);
+  h.driver.riderRelease(h.now);
+  drive.run(0.2, 2.0);
+  EXPECT_FALSE(h.plant.braked());
+  EXPECT_EQ(h.driver.state(), DriverState::kDriving);
+}
+
+TEST_F(CommandPathTest, NoPermitNoMotion) {
+  Harness fresh;
+  fresh.supervised = false;
+  fresh.run(0.1);
+  EXPECT_EQ(fresh.driver.state(), DriverState::kNoPermit);
+  EXPECT_EQ(fresh.driver.sentence(), "the safety supervisor is not running");
+  Drive unsupervised(fresh);
+  unsupervised.run(0.5, 2.0);
+  EXPECT_TRUE(fresh.plant.braked());
+  fresh.supervised = true;  // the supervisor comes up: permits, and the next command drives
+  unsupervised.run(0.1, 2.0);
+  EXPECT_EQ(fresh.driver.state(), DriverState::kDriving);
+  EXPECT_FALSE(fresh.plant.braked());
+}
+
+// The issue: the supervisor could be unloaded mid-drive and the chair drove on into a person.
+TEST_F(CommandPathTest, ASupervisorThatStopsGrantingBrakesTheChairWithinThePermitTimeout) {
+  drive.run(0.5, 2.0);
+  ASSERT_EQ(h.driver.state(), DriverState::kDriving);
+  const double last_permit = h.last_permit_time;
+  h.supervised = false;  // unloaded, crashed or hanging: no more permits
+  double braked_at = -1;
+  drive.run(0.5, 2.0, [&] {
+    if (braked_at < 0 && h.driver.lastCommand().brake) braked_at = h.now;
+  });
+  ASSERT_GT(braked_at, 0);
+  EXPECT_GE(braked_at - last_permit, 0.1 - 1e-9);
+  EXPECT_LE(braked_at - last_permit, 0.1 + 0.002) << "permit timeout 100 ms after the last one";
+  EXPECT_EQ(h.driver.state(), DriverState::kLatched);
+  EXPECT_EQ(h.driver.sentence(), "the safety supervisor is not running");
+  EXPECT_EQ(h.driver.counters().permit_losses, 1u);
+  h.supervised = true;  // a supervisor back does not restart the drive: the rider does
+  drive.run(0.3, 2.0);
+  EXPECT_TRUE(h.plant.braked());
+  h.driver.riderRelease(h.now);
+  drive.run(0.1, 2.0);
+  EXPECT_EQ(h.driver.state(), DriverState::kDriving);
+}
+
+TEST_F(CommandPathTest, ReplayedOrStalePermitsAreNotPermits) {
+  h.supervised = false;
+  h.run(0.3);
+  ASSERT_EQ(h.driver.state(), DriverState::kNoPermit);
+  const std::uint64_t last = h.permit_sequence;
+  for (int i = 0; i < 50; ++i) {
+    h.driver.onPermit(last, 1, h.now, false, h.now);                // a replay of the last permit
+    h.driver.onPermit(last + 1 + i, 1, h.now - 0.2, false, h.now);  // an old one
+    h.run(0.01);
+  }
+  EXPECT_EQ(h.driver.state(), DriverState::kNoPermit);
+  EXPECT_EQ(h.driver.counters().permits_refused, 100u);
+}
+
+// The supervisor's stop: the controller's controlled stop runs (no jolt), then the brake holds
+// until the supervisor lifts the stop (the rider's release); a brake command ends the stop.
+TEST_F(CommandPathTest, TheSupervisorsStopLetsTheControlledStopRunThenBrakes) {
+  drive.run(1.0, 2.0);
+  ASSERT_GT(h.plant.leftRate(), 2.0);
+  drive.resetCounts();
+  h.stop = true;
+  drive.run(4.0, 2.0);
+  EXPECT_EQ(drive.brake_engagements, 1);
+  EXPECT_EQ(drive.brake_releases, 0);
+  EXPECT_EQ(h.driver.state(), DriverState::kSupervisorStop);
+  EXPECT_TRUE(h.plant.braked());
+  EXPECT_LT(drive.rate_at_engagement, 0.1) << "braked at speed: a jolt";
+  h.stop = false;
+  drive.run(0.2, 2.0);
+  EXPECT_EQ(h.driver.state(), DriverState::kDriving);
+}
+
+TEST_F(CommandPathTest, TheStopWindowBoundsAControllerThatDoesNotStop) {
+  drive.run(0.5, 1.0);
+  h.stop = true;
+  double braked_at = -1;
+  const double t0 = h.now;
+  h.run(6.0, 0.001, [&] {
+    if (std::fmod(h.now, 0.02) < 0.001) h.torque(1.0, 1.0);  // it keeps driving
+    if (braked_at < 0 && h.plant.braked()) braked_at = h.now;
+  });
+  ASSERT_GT(braked_at, 0);
+  EXPECT_NEAR(braked_at - t0, h.driver.config().stop_window, 0.03);
+  EXPECT_EQ(h.driver.state(), DriverState::kSupervisorStop);
+}
+
+// The issue: SIGSTOP of the chair process mid-drive, then SIGCONT: the motors braked within
+// 0.1 s, but the chair drove on 0.18 m without a new command. The driver now ends the drive when
+// the motors braked for silence while it drove; nothing moves until the rider's release.
+TEST_F(CommandPathTest, AHangMidDriveNeverResumesWithoutTheRider) {
+  drive.run(1.0, 2.0);
+  ASSERT_FALSE(h.plant.braked());
+  // The chair process stops for 2 s: neither the controller nor the driver runs; the motor
+  // controller (another device) does.
+  for (int i = 0; i < 2000; ++i) {
+    h.now += 0.001;
+    h.controller.step(h.now);
+    h.plant.advance(0.001);
+  }
+  EXPECT_TRUE(h.plant.braked()) << "the motor controller's watchdog braked";
+  const double left_at_resume = h.plant.wheelAngles().left;
+  drive.resetCounts();
+  h.stop = false;
+  // Resumed: the controller commands again as if nothing happened.
+  h.run(1.0, 0.001, [&] {
+    if (std::fmod(h.now, 0.02) < 0.001) h.torque(2.0, 2.0);
+  });
+  EXPECT_TRUE(h.plant.braked());
+  EXPECT_NEAR(h.plant.wheelAngles().left, left_at_resume, 1e-9) << "moved after the resume";
+  EXPECT_EQ(h.driver.state(), DriverState::kLatched);
+  EXPECT_EQ(h.driver.latchCause(), LatchCause::kInterrupted);
+  EXPECT_EQ(h.driver.sentence(), "the chair's computer paused") << h.driver.latchDetail();
+}
+
+// The bus clock stands still (the simulator that owns it stopped) while the wall clock runs:
+// the driver latches a stop on the wall-clock watchdog, and the brake frame waits for the MC.
+TEST_F(CommandPathTest, AMotorControllerSilentInWallTimeLatchesWhileTheBusClockStandsStill) {
+  drive.run(0.5, 2.0);
+  ASSERT_EQ(h.driver.state(), DriverState::kDriving);
+  for (double wall = h.now; wall < h.now + 1.5; wall += 0.01)
+    h.driver.checkWallLiveness(h.now, wall);
+  EXPECT_EQ(h.driver.state(), DriverState::kLatched);
+  EXPECT_EQ(h.driver.latchCause(), LatchCause::kControllerStalled);
+  EXPECT_TRUE(h.driver.lastCommand().brake) << "the brake frame is on the bus for when it resumes";
+  h.run(0.002);
+  EXPECT_TRUE(h.plant.braked());
+}
+
+// The issue: 1 s of random frames gave 17 brake/release cycles and no latched stop. Now: one
+// stop (the controller's controlled stop or the brake), latched, with the reason, no release.
+TEST_F(CommandPathTest, RandomFramesOnTheBusEndInOneLatchedStop) {
+  drive.run(1.0, 2.0);
+  ASSERT_EQ(h.driver.state(), DriverState::kDriving);
+  drive.resetCounts();
+  std::mt19937_64 rng(20);
+  drive.run(1.0, 2.0, [&] { h.monitor->send(wheelchair_can::test::randomFrame(rng)); });
+  drive.run(4.0, 2.0);
+  EXPECT_EQ(drive.brake_engagements, 1);
+  EXPECT_EQ(drive.brake_releases, 0);
+  EXPECT_TRUE(h.plant.braked());
+  EXPECT_TRUE(isFault(h.driver.state())) << driverStateName(h.driver.state());
+  EXPECT_EQ(h.driver.latchCause(), LatchCause::kCorruptStream) << h.driver.latchDetail();
+  EXPECT_EQ(h.driver.sentence(), "the motor commands were garbled");
+}
+
+// The issue, live: 5 bad frames gave one hard jolt (0.40 -> 0.28 m/s in 40 ms) and the drive
+// went on. Now the drive ends in the controller's controlled stop, then the brake, latched.
+TEST_F(CommandPathTest, BadCommandFramesEndTheDriveWithAControlledStop) {
+  drive.run(1.0, 2.0);
+  ASSERT_GT(h.plant.leftRate(), 2.0);
+  drive.resetCounts();
+  int bad = 0;
+  drive.run(5.0, 2.0, [&] {
+    if (bad < 5 && std::fmod(h.now, 0.01) < 0.001) {
+      CanFrame f = protocol::encode(protocol::TorqueCommand{5, 5, true, false, 0});
+      f.data[7] ^= 0x5A;  // CRC broken
+      h.monitor->send(f);
+      ++bad;
+    }
+  });
+  EXPECT_EQ(h.driver.latchCause(), LatchCause::kCorruptStream);
+  EXPECT_EQ(drive.brake_engagements, 1);
+  EXPECT_EQ(drive.brake_releases, 0);
+  EXPECT_LT(drive.rate_at_engagement, 0.1) << "braked at speed: a jolt";
+  EXPECT_EQ(h.driver.state(), DriverState::kLatched);
+  EXPECT_EQ(h.driver.sentence(), "the motor commands were garbled");
+}
+
+// The driver holds the chair's speed limit itself (chair file max_speed): torque that would
+// speed it up beyond the limit is cut, and the overspeed ends the drive.
+TEST_F(CommandPathTest, TheDriverCutsTorqueAtMaxSpeedAndLatchesTheOverspeed) {
+  double fastest = 0.0;
+  h.run(3.0, 0.001, [&] {  // a controller pushing 40 N m whatever happens
+    if (std::fmod(h.now, 0.02) < 0.001) h.torque(40.0, 40.0);
+    fastest = std::max(fastest, 0.17 * h.plant.leftRate());
+  });
+  // Unlimited, 40 N m takes this light test plant to 24 m/s in 3 s; the cut comes within one
+  // encoder frame (10 ms) of the plant's 13.6 m/s^2 beyond the limit.
+  EXPECT_LT(fastest, 1.5 + 13.6 * 0.015) << "the driver did not hold the 1.5 m/s limit";
+  EXPECT_EQ(h.driver.latchCause(), LatchCause::kOverspeed);
+  EXPECT_EQ(h.driver.sentence(), "the chair went faster than its limit");
+  EXPECT_GT(h.driver.counters().speed_limited, 0u);
+}
+
+// ISO 7176-14 single fault: one wheel's encoder frozen while driving -> a latched stop.
+TEST_F(CommandPathTest, AFrozenEncoderEndsTheDriveInALatchedStop) {
+  drive.run(1.0, 2.0);
+  ASSERT_EQ(h.driver.state(), DriverState::kDriving);
+  h.controller.freezeEncoders(true, false);
+  const double t0 = h.now;
+  double latched_at = -1;
+  drive.run(1.0, 2.0, [&] {
+    if (latched_at < 0 && h.driver.latchCause() != LatchCause::kNone) latched_at = h.now;
+  });
+  ASSERT_GT(latched_at, 0);
+  EXPECT_LE(latched_at - t0, h.driver.config().encoder_check_time + 0.03);
+  EXPECT_EQ(h.driver.latchCause(), LatchCause::kEncoderFault);
+  EXPECT_EQ(h.driver.sentence(), "a wheel sensor failed");
+  EXPECT_TRUE(h.plant.braked());
+}
+
+// ISO 7176-14: power removed from the motor controller while driving: its spring brakes hold,
+// the driver loses it and ends the drive; power back does not restart it.
+TEST_F(CommandPathTest, PowerRemovedWhileDrivingBrakesAndLatches) {
+  drive.run(1.0, 2.0);
+  h.controller.setPowered(false);
+  drive.run(0.5, 2.0);
+  EXPECT_TRUE(h.plant.braked());
+  EXPECT_EQ(h.driver.state(), DriverState::kLatched);
+  EXPECT_EQ(h.driver.sentence(), "the motor controller stopped answering");
+  h.controller.setPowered(true);
+  drive.run(0.5, 2.0);
+  EXPECT_TRUE(h.plant.braked());
+  EXPECT_EQ(h.driver.state(), DriverState::kLatched);
+}
+
+// ISO 7176-14 output-device failure: the motor stage reports overcurrent while driving.
+TEST_F(CommandPathTest, AnOutputStageFaultWhileDrivingBrakesAndLatches) {
+  drive.run(1.0, 2.0);
+  h.controller.setInjectedFaults(protocol::kFaultOvercurrentLeft);
+  drive.run(0.05, 2.0);
+  EXPECT_TRUE(h.plant.braked());
+  EXPECT_EQ(h.driver.sentence(), "the motors report a fault");
+  h.controller.setInjectedFaults(0);
+  drive.run(0.5, 2.0);
+  EXPECT_TRUE(h.plant.braked()) << "a fault that went away does not restart the drive";
+}
+
+// The events the stack hears: a latched stop once, with its sentence; the release once.
+TEST_F(CommandPathTest, EventsSayWhenAStopLatchesAndWhenTheRiderReleasesIt) {
+  while (h.driver.takeEvent()) {
+  }
+  drive.run(0.5, 2.0);
+  EXPECT_FALSE(h.driver.takeEvent()) << "driving is no news";
+  h.driver.onForeignCommand("/intruder", h.now);
+  auto event = h.driver.takeEvent();
+  ASSERT_TRUE(event);
+  EXPECT_TRUE(event->fault);
+  EXPECT_TRUE(event->latched);
+  EXPECT_EQ(event->sentence, "another program tried to drive the chair");
+  EXPECT_NE(event->detail.find("/intruder"), std::string::npos) << event->detail;
+  drive.run(0.5, 2.0);
+  EXPECT_FALSE(h.driver.takeEvent());
+  h.driver.riderRelease(h.now);
+  event = h.driver.takeEvent();
+  ASSERT_TRUE(event);
+  EXPECT_FALSE(event->latched);
+  EXPECT_EQ(event->sentence, "");
+}
+
+}  // namespace
+}  // namespace wheelchair_base_driver

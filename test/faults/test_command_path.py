@@ -1,0 +1,317 @@
+#!/usr/bin/env python3
+"""Faults of the command path on the running chair (the simulator + the one-process chair, as
+the demo brings them up), one case per rostest (~case):
+
+- foreign_torques: another node publishes 20 N m on /wheel_torques at 500 Hz to the idle chair
+  (it drove 1.84 m/s into a wall): the chair stays put, the stop latches and is told.
+- foreign_release: after a latched stop (laser dropout) another node publishes /safety/stop
+  false, re-publishes the last /plan and a goal, and calls /base_driver/clear_estop (the chair
+  drove 1.12 m): nothing moves; the rider's own choice on the HMI drives again.
+- supervisor_unloaded: /wheelchair/unload_nodelet /safety mid-drive (the chair drove on into a
+  person): the chair stops without a permit and cannot be driven until a supervisor is back.
+- chair_hang / sim_hang: SIGSTOP of the chair process (or of the simulator) for 2 s mid-drive,
+  then SIGCONT (the chair moved 0.18 m after the resume): no motion after the resume without a
+  new command, and the rider is told why the drive ended.
+- corrupt_frames: 1 s of random torque-command frames on the motor bus mid-drive (17
+  brake/release cycles, a jolt): one controlled stop, latched, told.
+- Single faults after ISO 7176-14 (sim/motor_fault on the emulated motor controller):
+  power_removed (the motor side loses supply), frozen_encoder (one wheel's encoder stops
+  counting), output_fault (the output stage reports overcurrent), command_signal_lost (the
+  controller nodelet unloaded: commands stop): each ends in a stop the rider is told.
+Each case writes its figures (JSON) to ~result_file if set (bench/faults).
+"""
+import json
+import os
+import random
+import socket
+import struct
+import signal
+import sys
+import time
+import unittest
+import xmlrpc.client
+
+import rosgraph
+import rospy
+import rostest
+from nav_msgs.msg import Path
+from nodelet.srv import NodeletUnload
+from std_msgs.msg import Bool
+from wheelchair_msgs.msg import SafetyStatus, WheelTorques
+from wheelchair_sim.srv import EnableLaser, MotorFault
+
+from wheelchair_test.harness import Rider, describe_stop
+
+START = (3.0, 2.2, 0.0)  # living_centre, heading +x
+GOAL = "kitchen_door"
+
+
+def trigger_class():
+    """std_srvs/Trigger (Debian has no Python bindings of std_srvs without python3-std-srvs):
+    generated from its definition, md5 '*' (roscpp's servers accept it)."""
+    import genpy.dynamic
+
+    req = genpy.dynamic.generate_dynamic("std_srvs/TriggerRequest", "")["std_srvs/TriggerRequest"]
+    res = genpy.dynamic.generate_dynamic("std_srvs/TriggerResponse",
+                                         "bool success\nstring message\n")[
+        "std_srvs/TriggerResponse"]
+
+    class Trigger:
+        _type = "std_srvs/Trigger"
+        _md5sum = "*"
+        _request_class = req
+        _response_class = res
+
+    return Trigger
+
+
+def pid_of(node):
+    """The process id of a ROS node (its XML-RPC getPid)."""
+    master = rosgraph.Master("/test_command_path")
+    uri = master.lookupNode(node)
+    code, _, pid = xmlrpc.client.ServerProxy(uri).getPid("/test_command_path")
+    assert code == 1, f"getPid of {node}: {code}"
+    return pid
+
+
+def speed(s):
+    return 0.0 if s.truth is None else abs(s.truth[4])
+
+
+class CommandPath(unittest.TestCase):
+    def setUp(self):
+        self.s = Rider("test_command_path")
+
+    def ready(self):
+        s = self.s
+        self.assertEqual(s.wait_ready(), "")
+        self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
+
+    def stopped_and_told(self, since, what):
+        """At rest, a stop told to the rider (the supervisor's status or the controller's end),
+        and no motion for 3 s after."""
+        s = self.s
+        self.assertTrue(s.wait(s.at_rest, 30.0), f"{what}: still moving: " + s.describe(since))
+        rest = rospy.get_time()
+        told = lambda: s.first_stop(since) or s.controller_says("aborted", since)  # noqa: E731
+        self.assertTrue(s.wait(told, 10.0), f"{what}: no stop told: " + s.describe(since))
+        s.sim_sleep(3.0)
+        self.assertLess(s.travelled(rest), 0.03, f"{what}: moved again without a command: " +
+                        s.describe(since))
+        self.assertFalse(s.collided)
+        return rest
+
+    def test_command_path_fault(self):
+        case = rospy.get_param("~case")
+        self.figures = {"case": case}
+        getattr(self, "case_" + case)()
+        path = rospy.get_param("~result_file", "")
+        if path:
+            with open(path, "w") as f:
+                json.dump(self.figures, f)
+
+    def record_stop(self, t0, since):
+        """The figures of a stop that began at `t0`: distance travelled, the reason told."""
+        s = self.s
+        stop = s.first_stop(since)
+        told = describe_stop(stop[1]) if stop else ""
+        if not told:
+            told = next((c for _, c in s.received("controller", since) if c.startswith("aborted")),
+                        "")
+        self.figures.update({
+            "travelled_m": round(s.travelled(t0), 3),
+            "stop_told": told,
+            "sentence": stop[1].sentence if stop else "",
+        })
+
+    # ---- item 1: only the chair's own controller commands the motors ------------------------
+    def case_foreign_torques(self):
+        s = self.s
+        self.ready()
+        pub = rospy.Publisher("/wheel_torques", WheelTorques, queue_size=100, tcp_nodelay=True)
+        time.sleep(1.0)  # connections
+        since = s.mark()
+        t0 = rospy.get_time()
+        end = time.time() + 2.0
+        while time.time() < end:  # 500 Hz of wall time, 20 N m each wheel
+            m = WheelTorques()
+            m.header.stamp = rospy.Time.now()
+            m.left = m.right = 20.0
+            pub.publish(m)
+            time.sleep(0.002)
+        s.sim_sleep(1.0)
+        self.assertLess(s.travelled(t0), 0.03, "another node drove the chair: " + s.describe(since))
+        self.assertTrue(s.wait(lambda: s.first_stop(since), 10.0),
+                        "the foreign command was not told: " + s.describe(since))
+        _, stop = s.first_stop(since)
+        self.assertEqual(stop.reason, SafetyStatus.DRIVER_FAULT, describe_stop(stop))
+        self.assertIn("another program", stop.sentence, describe_stop(stop))
+        self.record_stop(t0, since)
+        rospy.loginfo("foreign torques: travelled %.3f m; %s", s.travelled(t0), describe_stop(stop))
+
+    # ---- item 2: the latch is released only by the rider ------------------------------------
+    def case_foreign_release(self):
+        s = self.s
+        s.start_driving(self, START, GOAL, 1.0)
+        laser = rospy.ServiceProxy("/sim/enable_laser", EnableLaser)
+        since = s.mark()
+        self.assertTrue(laser(False).success)
+        self.assertTrue(s.wait(lambda: s.first_stop(since), 30.0), "no stop: " + s.describe(since))
+        self.assertTrue(s.wait(s.at_rest, 30.0), "still moving: " + s.describe(since))
+        self.assertTrue(laser(True).success)
+        s.sim_sleep(1.0)
+        # Everything another node can do.
+        stop_pub = rospy.Publisher("/safety/stop", Bool, queue_size=1)
+        plan_pub = rospy.Publisher("/plan", Path, queue_size=1)
+        time.sleep(1.0)
+        foreign = rospy.get_time()
+        stop_pub.publish(Bool(False))
+        if s.plans:
+            plan = s.plans[-1]
+            plan.header.stamp = rospy.Time.now()
+            plan_pub.publish(plan)
+        x, y = s.truth[1] + 2.0, s.truth[2]
+        s.send_goal(x, y, 0.0)
+        clear = rospy.ServiceProxy("/base_driver/clear_estop", trigger_class())()
+        self.assertFalse(clear.success, clear.message)
+        self.assertIn("only the rider", clear.message)
+        s.sim_sleep(4.0)
+        foreign_travel = s.travelled(foreign)
+        self.assertLess(foreign_travel, 0.03,
+                        "a foreign release drove the chair: " + s.describe(since))
+        last = s.received("safety", since)[-1][1]
+        self.assertTrue(last.stop, "the supervisor's stop was lifted: " + describe_stop(last))
+        # The rider's own choice (the HMI) releases it.
+        go = s.mark()
+        accepted, message = s.go_to_place(GOAL)
+        self.assertTrue(accepted, message)
+        self.assertTrue(s.wait(lambda: s.travelled(go) > 0.3, 60.0),
+                        "the rider's release did not drive: " + s.describe(go))
+        self.figures.update({"travelled_m": round(foreign_travel, 3),
+                             "rider_release_drove_m": round(s.travelled(go), 3),
+                             "stop_told": describe_stop(last), "sentence": last.sentence})
+        rospy.loginfo("foreign release: %.3f m after the foreign release, %.2f m after the rider's",
+                      foreign_travel, s.travelled(go))
+
+    # ---- item 2: unloading the supervisor stops the chair -----------------------------------
+    def case_supervisor_unloaded(self):
+        s = self.s
+        s.start_driving(self, START, GOAL, 1.0)
+        since = s.mark()
+        v0 = speed(s)
+        t0 = rospy.get_time()
+        unload = rospy.ServiceProxy("/wheelchair/unload_nodelet", NodeletUnload)
+        self.assertTrue(unload("/safety").success)
+        rest = self.stopped_and_told(since, "supervisor unloaded")
+        self.record_stop(t0, since)
+        self.figures.update({"speed_mps": round(v0, 2), "at_rest_s": round(rest - t0, 2)})
+        self.assertLess(s.travelled(t0), 0.6, "braking distance: " + s.describe(since))
+        # No supervisor, no permit: the rider's command cannot drive either.
+        go = s.mark()
+        s.go_to_place(GOAL)
+        s.sim_sleep(4.0)
+        self.assertLess(s.travelled(go), 0.03, "drove without a supervisor: " + s.describe(go))
+        rospy.loginfo("supervisor unloaded at %.2f m/s: at rest after %.2f s, %.3f m", v0,
+                      rest - t0, s.travelled(t0))
+
+    # ---- item 3: no stale motion after a hang -----------------------------------------------
+    def hang(self, node):
+        s = self.s
+        s.start_driving(self, START, GOAL, 1.0)
+        since = s.mark()
+        pid = pid_of(node)
+        os.kill(pid, signal.SIGSTOP)
+        try:
+            time.sleep(2.0)
+        finally:
+            os.kill(pid, signal.SIGCONT)
+        resumed_wall = time.time()
+        while rospy.get_time() <= time_of_mark(since) and time.time() < resumed_wall + 10:
+            time.sleep(0.01)
+        resumed = rospy.get_time()
+        v_resume = speed(s)
+        rest = self.stopped_and_told(since, node + " hang")
+        after = s.travelled(resumed)
+        self.record_stop(resumed, since)
+        self.figures.update({"speed_at_resume_mps": round(v_resume, 2),
+                             "at_rest_after_resume_s": round(rest - resumed, 2)})
+        rospy.loginfo("%s hang: %.2f m/s at the resume, %.3f m after it, at rest %.2f s after",
+                      node, v_resume, after, rest - resumed)
+        return v_resume, after
+
+    def case_chair_hang(self):
+        # The motor side brakes within its 0.1 s watchdog during the hang; after the resume no
+        # queued or stale command moves the chair.
+        v, after = self.hang("/wheelchair")
+        self.assertLess(after, 0.03, "moved after the resume: " + self.s.describe())
+
+    def case_sim_hang(self):
+        # The simulated world stood still with the chair moving: after the resume it may only
+        # brake (v^2 / 2a at the chair's 1.0 m/s^2 braking, plus 0.1 s of reaction), never drive.
+        v, after = self.hang("/simulator")
+        self.assertLess(after, v * v / 2.0 + 0.1 * v + 0.03, "drove on after the resume")
+
+
+    # ---- item 4: a corrupted command stream is one latched stop ------------------------------
+    def case_corrupt_frames(self):
+        s = self.s
+        s.start_driving(self, START, GOAL, 1.0)
+        since = s.mark()
+        v0, t0 = speed(s), rospy.get_time()
+        port = rospy.get_param("~motor_port")
+        sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        rng = random.Random(20)
+        end = time.time() + 1.0
+        while time.time() < end:  # torque-command frames with random payloads (bad CRC)
+            frame = b"WC" + bytes([0, 8]) + struct.pack("<I", 0x110) + rng.randbytes(8)
+            sock.sendto(frame, ("127.0.0.1", port))
+            time.sleep(0.002)
+        rest = self.stopped_and_told(since, "corrupt frames")
+        self.record_stop(t0, since)
+        stops = s.stops(since)
+        self.assertEqual(len(stops), 1, "not one stop: %s" % stops)
+        self.assertEqual(s.first_stop(since)[1].reason, SafetyStatus.DRIVER_FAULT, stops)
+        self.figures.update({"speed_mps": round(v0, 2), "at_rest_s": round(rest - t0, 2),
+                             "stops": len(stops)})
+
+    # ---- item 7: single faults after ISO 7176-14 --------------------------------------------
+    def motor_fault(self, fault, what):
+        s = self.s
+        s.start_driving(self, START, GOAL, 1.0)
+        since = s.mark()
+        v0, t0 = speed(s), rospy.get_time()
+        answer = rospy.ServiceProxy("/sim/motor_fault", MotorFault)(fault)
+        self.assertTrue(answer.success, answer.message)
+        rest = self.stopped_and_told(since, what)
+        self.record_stop(t0, since)
+        self.figures.update({"speed_mps": round(v0, 2), "at_rest_s": round(rest - t0, 2)})
+        # v^2 / 2a at 1 m/s^2 braking + 0.3 s of detection at v, + 5 cm
+        self.assertLess(s.travelled(t0), v0 * v0 / 2.0 + 0.3 * v0 + 0.05, what)
+
+    def case_power_removed(self):
+        self.motor_fault("power_off", "power removed")
+
+    def case_frozen_encoder(self):
+        self.motor_fault("freeze_left_encoder", "frozen encoder")
+
+    def case_output_fault(self):
+        self.motor_fault("overcurrent_left", "output stage fault")
+
+    def case_command_signal_lost(self):
+        s = self.s
+        s.start_driving(self, START, GOAL, 1.0)
+        since = s.mark()
+        v0, t0 = speed(s), rospy.get_time()
+        unload = rospy.ServiceProxy("/wheelchair/unload_nodelet", NodeletUnload)
+        self.assertTrue(unload("/controller").success)
+        rest = self.stopped_and_told(since, "command signal lost")
+        self.record_stop(t0, since)
+        self.figures.update({"speed_mps": round(v0, 2), "at_rest_s": round(rest - t0, 2)})
+
+
+def time_of_mark(mark):
+    return mark.time if hasattr(mark, "time") else float(mark)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("wheelchair_test", "command_path", CommandPath, sys.argv)
