@@ -229,8 +229,9 @@ class HmiNodelet : public nodelet::Nodelet {
     // The rider's destination is their command to go on: it releases a latched stop of the
     // supervisor and the base driver in this process (the only release there is).
     if (!wheelchair_ros::releaseStopByRider("hmi: go to " + command.goal->place))
-      NODELET_WARN_ONCE("hmi: no supervisor or base driver in this process: a latched stop "
-                        "cannot be released from here");
+      NODELET_WARN_ONCE(
+          "hmi: no supervisor or base driver in this process: a latched stop "
+          "cannot be released from here");
     client_->sendGoal(
         *command.goal,
         [this, goal](const actionlib::SimpleClientGoalState& state,
