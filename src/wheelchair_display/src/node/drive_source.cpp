@@ -28,6 +28,7 @@ LegacyDriveSource::LegacyDriveSource(ros::NodeHandle& nh, DriveTracker& tracker,
   subs_.push_back(
       nh.subscribe("controller/path_status", 10, &LegacyDriveSource::onPathStatus, this));
   subs_.push_back(nh.subscribe("user_stop", 5, &LegacyDriveSource::onUserStop, this));
+  subs_.push_back(nh.subscribe("navigator/state", 5, &LegacyDriveSource::onNavigatorState, this));
 }
 
 void LegacyDriveSource::expectOwnGoal(const std::string& destination,
@@ -73,6 +74,24 @@ void LegacyDriveSource::onPathStatus(const actionlib_msgs::GoalStatus::ConstPtr&
   if (msg->status == actionlib_msgs::GoalStatus::ABORTED) {
     ROS_INFO("display: the drive ended: %s", msg->text.c_str());
     tracker_.ended(now, kArrivalRadius);
+  }
+}
+
+void LegacyDriveSource::onNavigatorState(const wheelchair_msgs::NavigatorState::ConstPtr& msg) {
+  const double now = ros::Time::now().toSec();
+  if (msg->active && msg->goal_id != navigator_goal_id_) {
+    navigator_goal_id_ = msg->goal_id;
+    const wheelchair_core::Pose2D goal = wheelchair_ros::toPose2D(msg->goal.pose);
+    const auto& told = tracker_.goalPose();
+    if (!(tracker_.driving() && told && near(*told, goal.x, goal.y))) {
+      const std::string name = msg->place.empty() ? nameOf(goal) : msg->place;
+      goal_stamp_ = msg->goal.header.stamp.isZero() ? ros::Time::now() : msg->goal.header.stamp;
+      tracker_.goal(name, goal, now);
+      own_goal_.reset();
+    }
+  } else if (!msg->active && !navigator_goal_id_.empty()) {
+    navigator_goal_id_.clear();
+    if (tracker_.driving()) tracker_.ended(now, kArrivalRadius);
   }
 }
 

@@ -1,8 +1,7 @@
-// Where the display learns about drives today: any goal on /move_base_simple/goal (the display's,
-// the HMI's, rviz's), the planner's /plan and /plan_certificate, and the controller's path
-// status, and any /user_stop. When the navigator (issue 22) owns drives, this file is replaced by a
-// client of its move_base action (goal, feedback with the distance left, one result with a rider
-// sentence); the DriveTracker it feeds stays as it is.
+// Where the display learns about drives: the navigator's /navigator/state (every drive it owns,
+// whoever started it: the HMI's switch through its action, this display, rviz), any goal on
+// /move_base_simple/goal, the planner's /plan and /plan_certificate, the controller's path
+// status, and any /user_stop.
 #pragma once
 
 #include <wheelchair_display/drive_tracker.h>
@@ -13,6 +12,7 @@
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <std_msgs/Empty.h>
+#include <wheelchair_msgs/NavigatorState.h>
 #include <wheelchair_msgs/PlanCertificate.h>
 
 #include <optional>
@@ -35,6 +35,9 @@ class LegacyDriveSource {
   void onPathStatus(const actionlib_msgs::GoalStatus::ConstPtr& msg);
   /// A stop from anyone (this display, another, the HMI's switch): the rider stopped the drive.
   void onUserStop(const std_msgs::Empty::ConstPtr&);
+  /// The navigator's drive: a new one is a goal (if not already told by its goal topic); its end
+  /// without an arrival verdict is an ended drive (arrived if the chair is at the goal).
+  void onNavigatorState(const wheelchair_msgs::NavigatorState::ConstPtr& msg);
   /// The name of the place at `goal`, the display's own destination, or "" (a spot).
   std::string nameOf(const wheelchair_core::Pose2D& goal) const;
 
@@ -42,6 +45,7 @@ class LegacyDriveSource {
   const std::vector<wheelchair_hmi::Place>& places_;
   std::optional<std::pair<std::string, wheelchair_core::Pose2D>> own_goal_;
   ros::Time goal_stamp_;
+  std::string navigator_goal_id_;  ///< the navigator's active drive, "" if none
   std::vector<ros::Subscriber> subs_;
 };
 
