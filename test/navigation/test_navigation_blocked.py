@@ -51,6 +51,7 @@ class Blocked(unittest.TestCase):
         self.assertEqual(s.wait_ready(), "")
         self.assertTrue(d.wait_servers(), "the navigator's actions are not up")
         self.assertTrue(s.teleport(*HALL_START).success)
+        s.sim_sleep(1.0)  # the scans taken before the teleport are through the localizer
         self.assertTrue(s.initialize(*HALL_START), "not localized: " + s.describe())
         self.block_the_doorway()
         t0 = s.mark()

@@ -66,7 +66,12 @@ class Person(unittest.TestCase):
         self.assertTrue(drive.wait(120.0), "the drive did not end: " + drive.describe())
         check_arrived(self, s, drive, "kitchen_door", t0)
         self.assertGreaterEqual(drive.result().waits, 1, drive.describe())
-        self.assertIn("The way is free: going on.", d.sentences_since(t_person), drive.describe())
+        # It goes on by itself: on the same route once the way is free, or round the person's
+        # trace in the live layer (both without a new command).
+        said = d.sentences_since(t_person)
+        self.assertTrue("The way is free: going on." in said
+                        or any(x.startswith("Going another way") for x in said),
+                        drive.describe())
         rospy.loginfo("navigation: person crossing %.1f m ahead at %.2f m/s (chair %.2f m/s): "
                       "waited %d time(s), arrived in %.1f s (sim)", AHEAD, WALK, v,
                       drive.result().waits, drive.result().duration)

@@ -6,4 +6,5 @@
 # leave_study.test (back out of the study to the living room) is not registered yet: the
 # footprint search does not yet find the way out backwards within its 10 s budget (it reaches
 # the hallway with the wrong heading); run it by hand: rostest wheelchair_test leave_study.test
-add_rostest(reverse/rear_guard.test)
+add_rostest(reverse/rear_guard_silent.test)
+add_rostest(reverse/rear_guard_person.test)
