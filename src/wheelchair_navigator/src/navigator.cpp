@@ -1,3 +1,4 @@
+#include <wheelchair_navigator/layer_cut.h>
 #include <wheelchair_navigator/navigator.h>
 
 #include <cstdio>
@@ -16,6 +17,10 @@ constexpr double kAbortGrace = 0.5;
 constexpr double kCorridorSettle = 0.3;
 /// [m] beyond the blocked stretch, the part of a new route checked for going through it.
 constexpr double kThroughHorizon = 3.0;
+/// A way round taken while the chair moves must start where it is and keep within kSmoothTurn
+/// [rad] of its heading over its first kSmoothLength [m] (a swerve, no turn back).
+constexpr double kSmoothLength = 0.6;
+constexpr double kSmoothTurn = 0.5;
 
 std::string seconds(double s) {
   char text[32];
@@ -57,6 +62,7 @@ struct Navigator::Drive {
   // A controller abort nobody explained yet.
   double abort_at = NAN;
   std::string abort_text;
+  std::string controller_text;  ///< the controller's last word on the route driven
   // Something in the way.
   std::vector<Eigen::Vector2d> blocked;
   std::string where, blocked_detail;
@@ -150,6 +156,13 @@ Output Navigator::onPlanAnswer(int plan_id, const PlanAnswer& answer, double now
         drive(answer.path, RouteKind::kFirst, now);
       } else if (answer.unavailable && d.path_id < 0) {
         finish(Reason::kNotReady, answer.detail, now);
+      } else if (const auto cut = d.path_id < 0 ? layerCutOfTheWay() : std::nullopt) {
+        // Something the map does not have (a person in a doorway) cuts the way: wait for it.
+        d.blocked = {*cut};
+        d.where = whereIs(d.blocked);
+        enterBlocked(
+            "no route while something the map does not have cuts the way (" + answer.detail + ")",
+            now);
       } else if (d.path_id < 0 && d.planner_retries < config_.max_planner_retries) {
         ++d.planner_retries;
         d.notes.push_back("no route (" + answer.detail + "), asked again");
@@ -158,18 +171,50 @@ Output Navigator::onPlanAnswer(int plan_id, const PlanAnswer& answer, double now
         finish(Reason::kNoRoute, answer.detail, now);
       }
       break;
+    case Purpose::kStart:
+      if (has_route) {
+        if (!askAgainIfElsewhere(answer, now)) drive(answer.path, RouteKind::kFirst, now);
+      } else if (const auto cut = answer.unavailable ? std::nullopt : layerCutOfTheWay()) {
+        d.blocked = {*cut};
+        d.where = whereIs(d.blocked);
+        enterBlocked(
+            "no route while something the map does not have cuts the way (" + answer.detail + ")",
+            now);
+      } else if (answer.unavailable) {
+        enterBlocked(answer.detail, now);
+      } else {
+        finish(Reason::kNoRoute, answer.detail, now);
+      }
+      break;
     case Purpose::kResume:
       if (has_route) {
-        drive(answer.path, RouteKind::kResumed, now);
+        if (!askAgainIfElsewhere(answer, now)) drive(answer.path, RouteKind::kResumed, now);
       } else {
         enterBlocked("no route: " + answer.detail, now);
       }
       break;
     case Purpose::kAround: {
+      if (state() == State::kWaiting && now - d.waiting_since < config_.wait_for_clear) {
+        // Asked while driving, answered once the supervisor stopped the chair: a person walks
+        // on; the chair waits first (a way round is asked at wait_for_clear if still needed).
+        d.last_around = -INFINITY;
+        break;
+      }
       if (!has_route) {
         enterBlocked("no way around: " + answer.detail, now);
         break;
       }
+      if (state() == State::kDriving && !smoothFromHere(answer.path)) {
+        // The planner checked the body's motion onto it from rest (a turn on the spot first);
+        // the moving chair would swing its tail wide turning onto it: it stops first, waits
+        // (a person walks on), and asks for a way round from where it stands.
+        d.notes.push_back("a way round turning away from the moving chair: stopped first");
+        enterWaiting(d.blocked, now);
+        latest_path_id_ = ++next_path_id_;
+        out_.path = PathCommand{latest_path_id_, {}};
+        break;
+      }
+      if (askAgainIfElsewhere(answer, now)) break;
       bool through;
       if (layer_stamp_ >= now - config_.layer_max_age) {  // the planner saw the layer
         through =
@@ -213,6 +258,7 @@ Output Navigator::onPathStatus(int path_id, ControllerPhase phase, const std::st
     return out_;
   }
   if (path_id != d.path_id || state() != State::kDriving) return out_;
+  d.controller_text = text;
   if (phase == ControllerPhase::kReached) {
     if (d.backing_up) {
       d.backing_up = false;
@@ -344,7 +390,9 @@ Output Navigator::tick(double now) {
       askPlan(Purpose::kRetry, now);
     }
     if (d.pending) {
-      if (std::isnan(d.released_at) && now >= d.release_at) {
+      if (std::isnan(d.released_at) && now >= d.release_at && !safety_.stop) {
+        sendPending(now);  // released meanwhile (a probe): the supervisor has checked the route
+      } else if (std::isnan(d.released_at) && now >= d.release_at) {
         out_.release_safety = true;
         d.released_at = now;
       } else if (!std::isnan(d.released_at) && now - d.released_at > config_.safety_clear_timeout) {
@@ -375,7 +423,10 @@ Output Navigator::tick(double now) {
         char text[96];
         std::snprintf(text, sizeof(text), "no progress for %.0f s, %.2f m still to go",
                       now - d.progress_time, feedback_.distance_remaining);
-        finish(Reason::kNoProgress, text, now);
+        finish(Reason::kNoProgress,
+               std::string(text) + " (controller: " +
+                   (d.controller_text.empty() ? "no word" : d.controller_text) + ")",
+               now);
       } else if (d.plan_id < 0 && !d.backing_up && now - d.last_around >= config_.replan_period &&
                  d.replans < config_.max_replans) {
         if (const auto obstacle = layerBlockAhead(now)) {
@@ -392,6 +443,13 @@ Output Navigator::tick(double now) {
       if (state() == State::kBlocked && now - d.blocked_since >= config_.blocked_timeout) {
         finish(Reason::kBlocked,
                "blocked for " + seconds(now - d.blocked_since) + ": " + d.blocked_detail, now);
+        break;
+      }
+      if (d.path_id < 0 && !d.backing_up) {  // blocked at the start: the first route again
+        if (d.plan_id < 0 && now - d.last_around >= config_.replan_period) {
+          d.last_around = now;
+          askPlan(Purpose::kStart, now);
+        }
         break;
       }
       const bool free = wayFree(now);
@@ -440,7 +498,7 @@ void Navigator::askPlan(Purpose purpose, double now) {
   d.plan_id = ++next_plan_id_;
   d.purpose = purpose;
   d.plan_asked = now;
-  if (purpose != Purpose::kFirst) ++d.replans;
+  if (purpose != Purpose::kFirst && purpose != Purpose::kStart) ++d.replans;
   out_.plan = PlanRequest{d.plan_id, d.goal};
   if (purpose == Purpose::kFirst || purpose == Purpose::kRetry) setState(State::kPlanning);
 }
@@ -613,6 +671,51 @@ SentenceContext Navigator::context() const {
   c.where = drive_->where;
   c.distance = drive_->route.length();
   return c;
+}
+
+bool Navigator::startsHere(const std::vector<Pose2D>& path, double& off) const {
+  off = 0.0;
+  if (path.empty() || !pose_) return true;
+  off = (path.front().position() - pose_->position()).norm();
+  return off <= config_.start_tolerance;
+}
+
+bool Navigator::smoothFromHere(const std::vector<Pose2D>& path) const {
+  double off = 0.0;
+  if (!startsHere(path, off) || !pose_) return false;
+  // Its direction over its first kSmoothLength against the chair's heading.
+  for (const Pose2D& p : path) {
+    const Eigen::Vector2d ahead = p.position() - path.front().position();
+    if (ahead.norm() < kSmoothLength) continue;
+    const double direction = std::atan2(ahead.y(), ahead.x());
+    return std::abs(wheelchair_core::angleDifference(direction, pose_->yaw)) <= kSmoothTurn;
+  }
+  return true;  // shorter than that: nearly there
+}
+
+bool Navigator::askAgainIfElsewhere(const PlanAnswer& answer, double now) {
+  Drive& d = *drive_;
+  double off = 0.0;
+  if (state() != State::kWaiting && state() != State::kBlocked) return false;
+  if (startsHere(answer.path, off)) return false;
+  if (d.replans >= config_.max_replans) {
+    enterBlocked("no routes left to ask for (" + std::to_string(d.replans) + ")", now);
+    return true;
+  }
+  char text[128];
+  std::snprintf(text, sizeof(text),
+                "a route from %.2f m away from where the chair stopped, asked again from there",
+                off);
+  d.notes.push_back(text);
+  askPlan(d.purpose, now);
+  return true;
+}
+
+std::optional<Eigen::Vector2d> Navigator::layerCutOfTheWay() const {
+  // The last layer, however old: the planner plans on the last one it got.
+  if (!drive_ || !goal_check_ || !pose_ || layer_.width <= 0) return std::nullopt;
+  return layerCut(goal_check_->configSpace(), static_map_, layer_, *pose_, drive_->goal,
+                  config_.layer_corridor);
 }
 
 bool Navigator::wayFree(double now) const {

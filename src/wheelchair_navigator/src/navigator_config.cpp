@@ -19,6 +19,7 @@ std::string NavigatorConfig::validate() const {
       .check(block_length > block_start, "block_length must exceed block_start")
       .positive("block_clearance", block_clearance)
       .nonNegative("where_radius", where_radius)
+      .positive("start_tolerance", start_tolerance)
       .positive("layer_lookahead", layer_lookahead)
       .positive("layer_corridor", layer_corridor)
       .positive("layer_max_age", layer_max_age)
@@ -47,6 +48,7 @@ void readNavigatorConfig(wheelchair_core::ConfigReader& reader, NavigatorConfig&
   reader.read("block_length", c.block_length);
   reader.read("block_clearance", c.block_clearance);
   reader.read("where_radius", c.where_radius);
+  reader.read("start_tolerance", c.start_tolerance);
   reader.read("layer_lookahead", c.layer_lookahead);
   reader.read("layer_corridor", c.layer_corridor);
   reader.read("layer_max_age", c.layer_max_age);

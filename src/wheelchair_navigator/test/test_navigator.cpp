@@ -632,5 +632,179 @@ TEST_F(NavigatorTest, ARouteTheLayerShowsClearIsAWayAroundEvenCloseToTheOldRoute
   EXPECT_EQ(nav.state(), State::kDriving);
 }
 
+TEST_F(NavigatorTest, AWayRoundAnsweredOnceStoppedWaitsForThePersonToWalkOnFirst) {
+  startDriving();
+  wheelchair_core::OccupancyMap layer = testRoom();
+  int ix, iy;
+  ASSERT_TRUE(layer.worldToCell(3.5, 2.5, ix, iy));
+  layer.at(ix, iy) = wheelchair_core::kOccupied;  // a person 2 m ahead
+  nav.onObstacleLayer(layer, t);
+  auto outs = runUntil(t + 0.15);
+  const PlanRequest* asked = planOf(outs);
+  ASSERT_NE(asked, nullptr);
+  const int early = asked->id;
+  // The supervisor stops the chair before the planner answers.
+  nav.onPose({2.5, 2.5, 0.0}, t);
+  nav.onSafety(stopFor(SafetyCause::kObstacle), t);
+  const double stopped = t;
+  std::vector<Pose2D> way = straight(2.5, 2.5, 2.5, 4.2);
+  const auto rest = straight(2.5, 4.2, 5.5, 2.5);
+  way.insert(way.end(), rest.begin() + 1, rest.end());
+  const Output answer = nav.onPlanAnswer(early, route(way), t + 0.5);
+  EXPECT_FALSE(answer.path) << "went round a person who walks on after half a second";
+  EXPECT_EQ(nav.state(), State::kWaiting);
+  outs = runUntil(stopped + nav.config().wait_for_clear - 0.05);
+  EXPECT_EQ(planOf(outs), nullptr);
+  outs = runUntil(stopped + nav.config().wait_for_clear + 0.15);
+  ASSERT_NE(planOf(outs), nullptr) << "still there at wait_for_clear: a way round is asked";
+}
+
+TEST_F(NavigatorTest, AWayRoundFromWhereTheChairWasBeforeItStoppedIsAskedAgainFromWhereItIs) {
+  startDriving();
+  nav.onPose({2.5, 2.5, 0.0}, t);
+  nav.onSafety(stopFor(SafetyCause::kObstacle), t);
+  auto outs = runUntil(t + nav.config().wait_for_clear + 0.15);
+  const PlanRequest* around = planOf(outs);
+  ASSERT_NE(around, nullptr);
+  // Planned from 0.4 m behind where the chair came to rest (it was still braking).
+  std::vector<Pose2D> way = straight(2.1, 2.5, 2.1, 4.2);
+  const auto rest = straight(2.1, 4.2, 5.5, 2.5);
+  way.insert(way.end(), rest.begin() + 1, rest.end());
+  const Output stale = nav.onPlanAnswer(around->id, route(way), t);
+  EXPECT_FALSE(stale.path) << "the turn onto it from here is not what the planner checked";
+  ASSERT_TRUE(stale.plan) << "not asked again from where the chair stands";
+  EXPECT_EQ(nav.state(), State::kWaiting);
+  std::vector<Pose2D> here = straight(2.5, 2.5, 2.5, 4.2);
+  const auto on = straight(2.5, 4.2, 5.5, 2.5);
+  here.insert(here.end(), on.begin() + 1, on.end());
+  const Output fresh = nav.onPlanAnswer(stale.plan->id, route(here), t);
+  ASSERT_TRUE(fresh.path);
+  EXPECT_EQ(fresh.path->poses.size(), here.size());
+  EXPECT_EQ(nav.feedback().replans, 2);
+}
+
+TEST_F(NavigatorTest, AWayRoundTurningAwayFromTheMovingChairStopsItFirstThenAsksFromThere) {
+  startDriving();
+  wheelchair_core::OccupancyMap layer = testRoom();
+  int ix, iy;
+  ASSERT_TRUE(layer.worldToCell(3.5, 2.5, ix, iy));
+  layer.at(ix, iy) = wheelchair_core::kOccupied;
+  nav.onObstacleLayer(layer, t);
+  auto outs = runUntil(t + 0.15);
+  ASSERT_NE(planOf(outs), nullptr);
+  const int id = planOf(outs)->id;
+  nav.onPose({2.0, 2.5, 0.0}, t);  // driving east at the first pose of the answer
+  // Round the far side: a turn to the north at once, which the moving chair cannot drive.
+  std::vector<Pose2D> way = straight(2.0, 2.5, 2.0, 4.2);
+  const auto rest = straight(2.0, 4.2, 5.5, 2.5);
+  way.insert(way.end(), rest.begin() + 1, rest.end());
+  nav.onObstacleLayer(layer, t);
+  const Output answer = nav.onPlanAnswer(id, route(way), t);
+  ASSERT_TRUE(answer.path);
+  EXPECT_TRUE(answer.path->poses.empty()) << "the moving chair turned sharply onto it";
+  EXPECT_EQ(nav.state(), State::kWaiting);
+  EXPECT_EQ(nav.feedback().sentence, "Something is in the way: waiting for it to move.");
+  // Still there after wait_for_clear: a way round from where the chair stands, driven.
+  nav.onPose({2.2, 2.5, 0.0}, t);
+  outs.clear();
+  for (int i = 0; i < 60 && !planOf(outs); ++i) {
+    t += 0.1;
+    nav.onObstacleLayer(layer, t);
+    outs = {nav.tick(t)};
+  }
+  ASSERT_NE(planOf(outs), nullptr);
+  std::vector<Pose2D> here = straight(2.2, 2.5, 2.2, 4.2);
+  const auto on = straight(2.2, 4.2, 5.5, 2.5);
+  here.insert(here.end(), on.begin() + 1, on.end());
+  nav.onObstacleLayer(layer, t);
+  const Output go = nav.onPlanAnswer(planOf(outs)->id, route(here), t);
+  ASSERT_TRUE(go.path);
+  EXPECT_EQ(go.path->poses.size(), here.size());
+  EXPECT_EQ(nav.state(), State::kDriving);
+}
+
+TEST_F(NavigatorTest, ARouteForTheSupervisorThatClearedMeanwhileGoesWithoutAnotherRelease) {
+  startDriving();
+  nav.onPose({2.5, 2.5, 0.0}, t);
+  nav.onSafety(stopFor(SafetyCause::kObstacle), t);
+  auto outs = runUntil(t + nav.config().wait_for_clear + 0.15);
+  const PlanRequest* around = planOf(outs);
+  ASSERT_NE(around, nullptr);
+  std::vector<Pose2D> way = straight(2.5, 2.5, 2.5, 4.2);
+  const auto rest = straight(2.5, 4.2, 5.5, 2.5);
+  way.insert(way.end(), rest.begin() + 1, rest.end());
+  const Output corridor = nav.onPlanAnswer(around->id, route(way), t);
+  ASSERT_TRUE(corridor.path);       // to the supervisor first, while it still holds its stop
+  nav.onSafety(clear(), t + 0.05);  // a probe's release cleared it before the navigator's own
+  outs = runUntil(t + 0.45);
+  const Output* sent = nullptr;
+  for (const auto& o : outs)
+    if (o.path) sent = &o;
+  ASSERT_NE(sent, nullptr) << "the route waited for a clear status that had already come";
+  EXPECT_EQ(sent->path->poses.size(), way.size());
+  EXPECT_EQ(nav.state(), State::kDriving);
+}
+
+class BlockedAtTheStartTest : public NavigatorTest {
+ protected:
+  /// A row of obstacles across the room at x = 4 that the map does not have, in the layer.
+  void rowAcrossTheRoom() {
+    wheelchair_core::OccupancyMap layer = testRoom();
+    layer.data.assign(layer.data.size(), wheelchair_core::kUnknown);
+    for (int iy = 0; iy < layer.height; ++iy) {
+      int ix, unused;
+      double x, y;
+      layer.worldToCell(4.0, 0.0, ix, unused);
+      layer.cellToWorld(ix, iy, x, y);
+      if (y > 0.1 && y < 5.0) layer.at(ix, iy) = wheelchair_core::kOccupied;
+    }
+    nav.onObstacleLayer(layer, t);
+  }
+};
+
+TEST_F(BlockedAtTheStartTest, NoRouteWhileTheLayerCutsTheWayIsWaitedForAndTheRiderTold) {
+  rowAcrossTheRoom();
+  const Output started = nav.start(goal("g1", kGoal, "kitchen_door"), t);
+  ASSERT_TRUE(started.plan);
+  const Output answer = nav.onPlanAnswer(started.plan->id, noRoute(), t);
+  EXPECT_TRUE(answer.results.empty()) << "refused at once";
+  EXPECT_EQ(nav.state(), State::kBlocked);
+  EXPECT_EQ(nav.feedback().sentence,
+            "The way is blocked near kitchen door: the chair waits until it is free.");
+  // Asked again every replan_period; free again: the first route, driven.
+  auto outs = runAnswering(t + nav.config().replan_period - 0.05, noRoute());
+  EXPECT_EQ(planOf(outs), nullptr);
+  outs = runUntil(t + 0.15);
+  const PlanRequest* again = planOf(outs);
+  ASSERT_NE(again, nullptr);
+  const Output go = nav.onPlanAnswer(again->id, route(), t);
+  ASSERT_TRUE(go.path);
+  EXPECT_EQ(nav.state(), State::kDriving);
+  EXPECT_EQ(nav.feedback().sentence, "Going to kitchen door: 4.0 m.");
+}
+
+TEST_F(BlockedAtTheStartTest, StillCutAfterBlockedTimeoutTheDriveEndsBlockedWithWhere) {
+  rowAcrossTheRoom();
+  const Output started = nav.start(goal("g1", kGoal, "kitchen_door"), t);
+  nav.onPlanAnswer(started.plan->id, noRoute(), t);
+  const auto outs = runAnswering(t + nav.config().blocked_timeout + 0.2, noRoute());
+  const auto results = resultsOf(outs);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].reason, Reason::kBlocked);
+  EXPECT_EQ(results[0].sentence,
+            "The way is blocked near kitchen door. The chair has stopped: choose a destination to "
+            "go on.");
+  EXPECT_NE(results[0].detail.find("cuts the way"), std::string::npos) << results[0].detail;
+}
+
+TEST_F(BlockedAtTheStartTest, NoRouteWithoutTheLayerCuttingTheWayIsStillNoRoute) {
+  const Output started = nav.start(goal("g1", kGoal, "kitchen_door"), t);
+  nav.onPlanAnswer(started.plan->id, noRoute(), t);
+  const auto outs = runAnswering(t + nav.config().retry_delay + 0.3, noRoute());
+  const auto results = resultsOf(outs);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].reason, Reason::kNoRoute);
+}
+
 }  // namespace
 }  // namespace wheelchair_navigator

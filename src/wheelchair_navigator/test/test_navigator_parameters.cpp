@@ -29,7 +29,8 @@ TEST(NavigatorParameters, EveryKeyIsRead) {
       "safety_clear_timeout: 3, max_planner_retries: 0, retry_delay: 2, wait_for_clear: 4, "
       "probe_period: 0.5, clear_confirm: 2, blocked_timeout: 30, replan_period: 3, "
       "max_replans: 4, block_start: 0.4, block_length: 1.4, block_clearance: 0.2, "
-      "where_radius: 2, layer_lookahead: 2, layer_corridor: 0.4, layer_max_age: 1, "
+      "where_radius: 2, start_tolerance: 0.2, layer_lookahead: 2, layer_corridor: 0.4, "
+      "layer_max_age: 1, "
       "no_progress_timeout: 20, progress_distance: 0.2, progress_rotation: 0.4, "
       "max_control_retries: 1, stop_timeout: 4, max_back_ups: 0, goal_min_clearance: 0.02}");
   EXPECT_EQ(p.map_frame, "world");
@@ -39,6 +40,7 @@ TEST(NavigatorParameters, EveryKeyIsRead) {
   EXPECT_EQ(p.navigator.max_replans, 4);
   EXPECT_EQ(p.navigator.goal_min_clearance, 0.02);
   EXPECT_EQ(p.navigator.max_back_ups, 0);
+  EXPECT_EQ(p.navigator.start_tolerance, 0.2);
 }
 
 TEST(NavigatorParameters, UnknownRenamedAndUnusableKeysAreRefused) {
@@ -53,6 +55,7 @@ TEST(NavigatorParameters, UnknownRenamedAndUnusableKeysAreRefused) {
   EXPECT_THROW(load("{block_start: 2.0, block_length: 1.0}"), wheelchair_core::ConfigError);
   EXPECT_THROW(load("{max_replans: -1}"), wheelchair_core::ConfigError);
   EXPECT_THROW(load("{rate: -1}"), wheelchair_core::ConfigError);
+  EXPECT_THROW(load("{start_tolerance: 0}"), wheelchair_core::ConfigError);
 }
 
 }  // namespace

@@ -37,6 +37,8 @@ class GoalCheck {
   /// nullopt if the chair's body fits at `goal` with at least `min_clearance` [m]; else why not:
   /// outside the map, the point itself in an occupied or unknown cell, or the body overlapping.
   std::optional<GoalRefusal> check(const wheelchair_core::Pose2D& goal, double min_clearance) const;
+  /// The static map's C-space it checks on (the chair's centre; see layer_cut.h).
+  const wheelchair_planner::ConfigSpace& configSpace() const { return *cspace_; }
 
  private:
   std::unique_ptr<wheelchair_planner::ConfigSpace> cspace_;

@@ -6,14 +6,20 @@
 //   result
 //       | release the supervisor's latch (the rider's command), ask the planner
 //   PLANNING -- route --> DRIVING (the route to the controller once the supervisor allows motion)
-//       | no route: one retry, then result NO_ROUTE
+//       | no route, and the obstacle layer cuts a way the static map has (layer_cut.h): BLOCKED
+//       | no route otherwise: one retry, then result NO_ROUTE
 //   DRIVING -- controller reached --> result REACHED
-//       | supervisor stops for an obstacle, or the obstacle layer has one on the route ahead
+//       | the obstacle layer has something on the route ahead: a way round is asked, taken on
+//       | the move only if it swerves from where the chair is (no turn back: the tail swings
+//       | wide); otherwise the chair stops for it
+//       | supervisor stops for an obstacle
 //       v
 //   WAITING -- the way free again for clear_confirm (asked every probe_period) --> same way
-//       | after wait_for_clear: a way around (the planner sees the obstacle layer)
+//       | after wait_for_clear (a person walks on first): a way around (the planner sees the
+//       | obstacle layer), driven only if it starts where the chair stands (else asked again)
 //       | that way goes through the same stretch, or none --> BLOCKED (the rider is told where)
 //   BLOCKED -- the way free again --> DRIVING;  a way around found --> DRIVING
+//       | blocked at the start: the first route asked again every replan_period
 //       | blocked_timeout --> result BLOCKED
 //   Anything else ends the drive with its reason (safety stop with its cause, localization lost,
 //   no progress, controller gave up after max_control_retries, cancel, a newer goal), through
@@ -170,7 +176,8 @@ class Navigator {
 
  private:
   struct Drive;
-  enum class Purpose { kFirst, kResume, kAround, kRetry };
+  /// kStart: the first route again, the way blocked at the start by the obstacle layer.
+  enum class Purpose { kFirst, kResume, kAround, kRetry, kStart };
 
   void askPlan(Purpose purpose, double now);
   void drive(std::vector<Pose2D> poses, RouteKind kind, double now);
@@ -183,6 +190,14 @@ class Navigator {
   void setState(State state, RouteKind kind = RouteKind::kFirst);
   void refreshFeedback();
   bool wayFree(double now) const;
+  /// The route starts where the chair stands (start_tolerance); `off`: how far off it does [m].
+  bool startsHere(const std::vector<Pose2D>& path, double& off) const;
+  /// Where the obstacle layer cuts the way from the chair to the goal (layer_cut.h).
+  std::optional<Eigen::Vector2d> layerCutOfTheWay() const;
+  /// A route for a chair that stands, planned from elsewhere: asked again. True if it was.
+  bool askAgainIfElsewhere(const PlanAnswer& answer, double now);
+  /// The route starts where the moving chair is and swerves, no turn back (kSmoothTurn).
+  bool smoothFromHere(const std::vector<Pose2D>& path) const;
   std::optional<Eigen::Vector2d> layerBlockAhead(double now) const;
   std::string whereIs(const std::vector<Eigen::Vector2d>& stretch) const;
   SentenceContext context() const;

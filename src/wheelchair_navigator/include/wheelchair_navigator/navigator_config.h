@@ -26,6 +26,10 @@ struct NavigatorConfig {
   double block_length = 1.5;      ///< [m]   stretch the obstacle blocks (stop distance + braking)
   double block_clearance = 0.3;   ///< [m] a route this close to that stretch goes through it
   double where_radius = 3.0;      ///< [m] the nearest named place within it says where
+  /// [m] a route handed over while the chair stands (waiting, blocked) starts this close to
+  /// where it stands, or it is asked again from there: the planner checked the body's motion
+  /// (a turn on the spot first) from the route's start, not from where the chair stopped later.
+  double start_tolerance = 0.10;
   // The obstacle layer (/obstacles) on the route ahead, while driving.
   double layer_lookahead = 3.0;  ///< [m] along the route
   double layer_corridor = 0.35;  ///< [m] either side of the route (chair half width + margin)

@@ -45,8 +45,9 @@ def check_arrived(test, rider, drive, name, since):
     one result message, no contact since `since`."""
     from .worlds import place
 
-    test.assertEqual(drive.status(), GoalStatus.SUCCEEDED, drive.describe())
-    test.assertEqual(drive.result().reason, NavigateResult.REACHED, drive.describe())
+    told = drive.describe() + "; " + rider.describe(since)
+    test.assertEqual(drive.status(), GoalStatus.SUCCEEDED, told)
+    test.assertEqual(drive.result().reason, NavigateResult.REACHED, told)
     test.assertTrue(rider.wait(rider.at_rest, 20.0))
     distance, heading = rider.error_to(*place(name))
     test.assertLess(distance, 0.15, rider.describe(since))
