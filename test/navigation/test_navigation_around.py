@@ -59,6 +59,11 @@ class Around(unittest.TestCase):
         t_block = rospy.get_time()
         self.assertTrue(drive.wait(100.0), "the drive did not end: " + drive.describe() + "; "
                         + s.describe(t0))
+        with s.lock:
+            plans = [c for c in s.certificates if c.header.stamp.to_sec() >= t_block]
+        routes = ", ".join("%.3f s %s (footprint search %.3f s)"
+                           % (c.planning_time, c.path_stage, c.search_time) for c in plans)
+        rospy.loginfo("navigation: routes after the obstacle appeared: %s", routes)
         check_arrived(self, s, drive, "kitchen_door", t0)
         result = drive.result()
         self.assertGreaterEqual(result.replans, 1, drive.describe())
@@ -70,14 +75,10 @@ class Around(unittest.TestCase):
         self.assertGreater(closest, r + 0.31, "the chair drove into the blocked gap")
         said = d.sentences_since(t_block)
         self.assertTrue(any(t.startswith("Going another way") for t in said), said)
-        with s.lock:
-            plans = [c for c in s.certificates if c.header.stamp.to_sec() >= t_block]
         rospy.loginfo("navigation: obstacle in the table's east gap: round the north side, "
                       "arrived in %.1f s (sim) after the goal, %d replan(s), %d wait(s), "
                       "closest %.2f m to the obstacle's centre; routes after it: %s",
-                      result.duration, result.replans, result.waits, closest,
-                      ", ".join("%.3f s %s (footprint search %.3f s)"
-                                % (c.planning_time, c.path_stage, c.search_time) for c in plans))
+                      result.duration, result.replans, result.waits, closest, routes)
 
 
 if __name__ == "__main__":
