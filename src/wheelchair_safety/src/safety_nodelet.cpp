@@ -238,8 +238,12 @@ class SafetyNodelet : public nodelet::Nodelet {
       const sensor_msgs::LaserScan::ConstPtr msg = waiting.front();
       geometry_msgs::TransformStamped in_map;
       try {
-        in_map = tf_buffer_->lookupTransform(map_frame_, ros::Time(0), msg->header.frame_id,
-                                             msg->header.stamp, odom_frame_);
+        // A tree without odometry (map -> base_link directly, as in rigs): at the scan's stamp.
+        in_map =
+            tf_buffer_->_frameExists(odom_frame_)
+                ? tf_buffer_->lookupTransform(map_frame_, ros::Time(0), msg->header.frame_id,
+                                              msg->header.stamp, odom_frame_)
+                : tf_buffer_->lookupTransform(map_frame_, msg->header.frame_id, msg->header.stamp);
       } catch (const tf2::ExtrapolationException& e) {
         if ((ros::Time::now() - msg->header.stamp).toSec() <= scan_wait_) return;  // later
         NODELET_WARN_THROTTLE(2.0, "%s skipped: no %s -> %s at its stamp: %s", which,
