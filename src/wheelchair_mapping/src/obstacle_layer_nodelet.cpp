@@ -3,16 +3,20 @@
 // while /localization/status says localized) into an
 // ObstacleLayer on the grid of /map, and publishes it, latched, on /obstacles
 // (nav_msgs/OccupancyGrid, same geometry as /map: 100 obstacle, 0 seen free, -1 no evidence)
-// every ~publish_period s when it changed, decay included. A new /map starts a new layer.
+// every ~publish_period s when it changed, decay included. A new /map starts a new layer; a map
+// it refuses (any node can publish /map: too big for max_map_cells, broken) leaves the last good
+// layer in place, so one bad message does not switch the live layer off while the chair drives.
+// tf from the process's one buffer (wheelchair_ros::sharedTfBuffer): a listener of its own
+// processed every /tf message a second time on a thread of its own.
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 #include <wheelchair_mapping/obstacle_layer.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/parameters.h>
+#include <wheelchair_ros/shared_tf.h>
 #include <pluginlib/class_list_macros.hpp>
 
 #include <memory>
@@ -29,7 +33,7 @@ class ObstacleLayerNodelet : public nodelet::Nodelet {
     ros::NodeHandle& nh = getNodeHandle();
     config_ = wheelchair_ros::loadParameters<ObstacleLayerNodeConfig>(getPrivateNodeHandle(),
                                                                       readObstacleLayerNodeConfig);
-    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_, nh);
+    tf_buffer_ = wheelchair_ros::sharedTfBuffer();
     pub_ = nh.advertise<nav_msgs::OccupancyGrid>("obstacles", 1, true);
     map_sub_ = nh.subscribe("map", 1, &ObstacleLayerNodelet::onMap, this);
     status_sub_ = nh.subscribe("localization/status", 1, &ObstacleLayerNodelet::onStatus, this);
@@ -40,15 +44,17 @@ class ObstacleLayerNodelet : public nodelet::Nodelet {
   }
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    try {
-      layer_ =
+    std::unique_ptr<ObstacleLayer> layer;
+    try {  // before the lock: a refused map changes nothing
+      layer =
           std::make_unique<ObstacleLayer>(wheelchair_ros::fromOccupancyGrid(*msg), config_.layer);
-      published_.clear();
     } catch (const std::invalid_argument& e) {
-      layer_.reset();
-      NODELET_ERROR("no obstacle layer on this map: %s", e.what());
+      NODELET_ERROR("obstacle layer: map refused, keeping the last good one: %s", e.what());
+      return;
     }
+    std::lock_guard<std::mutex> lock(mutex_);
+    layer_ = std::move(layer);
+    published_.clear();
   }
 
   void onStatus(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg) {
@@ -62,8 +68,8 @@ class ObstacleLayerNodelet : public nodelet::Nodelet {
     }
     geometry_msgs::TransformStamped t;
     try {
-      t = tf_buffer_.lookupTransform(config_.map_frame, msg->header.frame_id, msg->header.stamp,
-                                     ros::Duration(config_.tf_timeout));
+      t = tf_buffer_->lookupTransform(config_.map_frame, msg->header.frame_id, msg->header.stamp,
+                                      ros::Duration(config_.tf_timeout));
     } catch (const tf2::TransformException& e) {
       NODELET_WARN_THROTTLE(5.0, "scan skipped: no tf %s -> %s: %s", config_.map_frame.c_str(),
                             msg->header.frame_id.c_str(), e.what());
@@ -97,8 +103,7 @@ class ObstacleLayerNodelet : public nodelet::Nodelet {
   std::unique_ptr<ObstacleLayer> layer_;
   std::vector<int8_t> published_;
   bool localized_ = false;
-  tf2_ros::Buffer tf_buffer_;
-  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   ros::Publisher pub_;
   ros::Subscriber map_sub_, status_sub_, scan_sub_, rear_scan_sub_;
   ros::WallTimer timer_;

@@ -7,6 +7,10 @@
 // rider's release (wheelchair_ros::releaseStopByRider, called by the HMI), never by a topic.
 // Publishes the latched stop flag and the typed status (wheelchair_msgs/SafetyStatus), outputs
 // only, whenever the verdict changes.
+// Its callbacks run on a thread and callback queue of its own ("safety"), not the nodelet
+// manager's shared pool, and a scan never waits for tf inside a callback: the supervisor's view
+// of the laser and its permits do not wait behind another nodelet's callback (under the legacy
+// PC's CPU cap a 50 ms tf wait per scan held its permit timer past the driver's 100 ms).
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/drive_channel.h>
@@ -20,6 +24,7 @@
 #include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <nodelet/nodelet.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
@@ -28,9 +33,13 @@
 #include <tf2_ros/buffer.h>
 #include <pluginlib/class_list_macros.hpp>
 
+#include <pthread.h>
+
 #include <atomic>
+#include <deque>
 #include <memory>
 #include <mutex>
+#include <thread>
 
 #include "safety_status_msg.h"
 
@@ -45,6 +54,7 @@ struct SafetyNodeletConfig {
   /// command rate (the driver's permit_timeout is 100 ms).
   double rate = 50.0;
   std::string map_frame = "map";
+  std::string odom_frame = "odom";  ///< a scan is placed by odometry at its stamp, then map -> odom
   std::string base_frame = "base_link";
 
   std::string validate() const {
@@ -56,6 +66,7 @@ struct SafetyNodeletConfig {
         .check(map_problem.empty(), map_problem)
         .positive("rate", rate)
         .check(!map_frame.empty(), "map_frame must not be empty")
+        .check(!odom_frame.empty(), "odom_frame must not be empty")
         .check(!base_frame.empty(), "base_frame must not be empty");
     return checks.result();
   }
@@ -67,19 +78,23 @@ void readSafetyNodeletConfig(wheelchair_core::ConfigReader& reader, SafetyNodele
   wheelchair_core::readMapLimits(reader, config.map_limits);
   reader.read("rate", config.rate);
   reader.read("map_frame", config.map_frame);
+  reader.read("odom_frame", config.odom_frame);
   reader.read("base_frame", config.base_frame);
 }
 
 class SafetyNodelet : public nodelet::Nodelet {
  public:
   ~SafetyNodelet() override {
+    running_ = false;
+    if (thread_.joinable()) thread_.join();  // no callback of this nodelet runs any more
     timer_.stop();
     registration_.reset();  // no permit any more: the driver brakes within its permit_timeout
   }
 
  private:
   void onInit() override {
-    ros::NodeHandle nh = getNodeHandle();
+    ros::NodeHandle nh(getNodeHandle());  // the nodelet's names and remappings, its own queue
+    nh.setCallbackQueue(&queue_);
     // The chair's supervisor: the one that permits motion (a second one is refused).
     channel_ = wheelchair_ros::driveChannel();
     try {
@@ -92,7 +107,9 @@ class SafetyNodelet : public nodelet::Nodelet {
     const auto config = wheelchair_ros::loadParameters<SafetyNodeletConfig>(
         getPrivateNodeHandle(), readSafetyNodeletConfig);
     map_frame_ = config.map_frame;
+    odom_frame_ = config.odom_frame;
     base_frame_ = config.base_frame;
+    scan_wait_ = config.limits.scan_timeout;
     map_limits_ = config.map_limits;
     driver_fault_grace_ = config.limits.driver_fault_grace;
     {
@@ -115,6 +132,14 @@ class SafetyNodelet : public nodelet::Nodelet {
     subs_.push_back(nh.subscribe("move_base_simple/goal", 5, &SafetyNodelet::onGoal, this));
     ready_ = true;
     timer_ = nh.createTimer(ros::Duration(1.0 / config.rate), &SafetyNodelet::onTimer, this);
+    running_ = true;
+    thread_ = std::thread([this] { spin(); });
+  }
+
+  /// The supervisor's own thread: its callbacks only, one at a time (as on a nodelet's queue).
+  void spin() {
+    pthread_setname_np(pthread_self(), "safety");  // per-thread CPU in /proc names it
+    while (running_ && ros::ok()) queue_.callAvailable(ros::WallDuration(0.05));
   }
 
   /// A map any node may have published: refused with the reason unless usable (an uncaught
@@ -159,56 +184,96 @@ class SafetyNodelet : public nodelet::Nodelet {
   }
 
   void onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
-    geometry_msgs::TransformStamped laser_in_map;
-    try {
-      laser_in_map = tf_buffer_->lookupTransform(map_frame_, msg->header.frame_id,
-                                                 msg->header.stamp, ros::Duration(0.05));
-    } catch (const tf2::TransformException& e) {
-      NODELET_WARN_THROTTLE(2.0, "scan skipped: no %s -> %s: %s", map_frame_.c_str(),
-                            msg->header.frame_id.c_str(), e.what());
-      return;  // the scan watchdog then runs out and stops the chair
-    }
-    wheelchair_core::LaserScan2D scan = wheelchair_ros::fromLaserScanMsg(*msg);
+    keep(front_waiting_, msg);
+    placeWaiting();
+  }
+
+  /// The front scan, placed: its returns and what the laser sees along the path.
+  void useScan(const sensor_msgs::LaserScan& msg, const geometry_msgs::Transform& laser_in_map) {
+    wheelchair_core::LaserScan2D scan = wheelchair_ros::fromLaserScanMsg(msg);
     wheelchair_core::Pose2D laser_pose;
-    if (wheelchair_ros::laserPose2D(laser_in_map.transform, laser_pose))
+    if (wheelchair_ros::laserPose2D(laser_in_map, laser_pose))
       wheelchair_core::mirrorScanAngles(scan);  // mounted upside down
     const auto returns = wheelchair_core::scanEndpoints(scan, laser_pose);
     std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onScan(msg->header.stamp.toSec(), returns);
+    supervisor_->onScan(msg.header.stamp.toSec(), returns);
     supervisor_->onLaserView(scan, laser_pose);
   }
 
-  /// The forward speed scales the protective field.
-  void onOdometry(const nav_msgs::Odometry::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onSpeed(msg->header.stamp.toSec(), msg->twist.twist.linear.x);
-  }
-
-  /// The rear laser (it guards reverse motion): its returns in the map frame.
-  void onRearScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
-    std::vector<Eigen::Vector2d> returns;
-    if (!returnsInMap(*msg, returns)) return;  // the rear watchdog then runs out
-    std::lock_guard<std::mutex> lock(mutex_);
-    supervisor_->onRearScan(msg->header.stamp.toSec(), returns);
-  }
-
-  /// A scan's returns in the map frame (tf at the scan's stamp); false if tf has no transform.
-  bool returnsInMap(const sensor_msgs::LaserScan& msg, std::vector<Eigen::Vector2d>& returns) {
-    geometry_msgs::TransformStamped sensor_in_map;
-    try {
-      sensor_in_map = tf_buffer_->lookupTransform(map_frame_, msg.header.frame_id, msg.header.stamp,
-                                                  ros::Duration(0.05));
-    } catch (const tf2::TransformException& e) {
-      NODELET_WARN_THROTTLE(2.0, "%s scan skipped: no %s -> %s: %s", msg.header.frame_id.c_str(),
-                            map_frame_.c_str(), msg.header.frame_id.c_str(), e.what());
-      return false;
-    }
+  /// The rear scan, placed: its returns in the map frame.
+  void useRearScan(const sensor_msgs::LaserScan& msg, const geometry_msgs::Transform& in_map) {
     wheelchair_core::LaserScan2D scan = wheelchair_ros::fromLaserScanMsg(msg);
     wheelchair_core::Pose2D sensor_pose;
-    if (wheelchair_ros::laserPose2D(sensor_in_map.transform, sensor_pose))
+    if (wheelchair_ros::laserPose2D(in_map, sensor_pose))
       wheelchair_core::mirrorScanAngles(scan);  // mounted upside down
-    returns = wheelchair_core::scanEndpoints(scan, sensor_pose);
-    return true;
+    const auto returns = wheelchair_core::scanEndpoints(scan, sensor_pose);
+    std::lock_guard<std::mutex> lock(mutex_);
+    supervisor_->onRearScan(msg.header.stamp.toSec(), returns);
+  }
+
+  /// Scans wait here, oldest first, until odometry reaches their stamps (never inside a
+  /// blocking tf lookup: it held the supervisor's timer, and with it the permits, behind it).
+  static void keep(std::deque<sensor_msgs::LaserScan::ConstPtr>& waiting,
+                   const sensor_msgs::LaserScan::ConstPtr& msg) {
+    waiting.push_back(msg);
+    while (waiting.size() > kMaxWaitingScans) waiting.pop_front();
+  }
+
+  /// Every waiting scan tf can place now (on each scan, odometry message and check).
+  void placeWaiting() {
+    placeOrKeep(front_waiting_, "scan", &SafetyNodelet::useScan);
+    placeOrKeep(rear_waiting_, "rear scan", &SafetyNodelet::useRearScan);
+  }
+
+  /// The sensor's pose in the map without waiting for the localizer: odometry at the scan's
+  /// stamp (odom -> sensor) composed with the localizer's latest map -> odom (which it dates a
+  /// transform_tolerance ahead, so the scan's own stamp often is not there yet: that lookup
+  /// waited for the localizer's update of this very scan). A scan odometry has not reached yet
+  /// waits (up to scan_timeout: the watchdog has stopped the chair by then); one tf can never
+  /// place (no map frame yet, an unknown frame) is dropped with a warning.
+  void placeOrKeep(std::deque<sensor_msgs::LaserScan::ConstPtr>& waiting, const char* which,
+                   void (SafetyNodelet::*use)(const sensor_msgs::LaserScan&,
+                                              const geometry_msgs::Transform&)) {
+    while (!waiting.empty()) {
+      const sensor_msgs::LaserScan::ConstPtr msg = waiting.front();
+      geometry_msgs::TransformStamped in_map;
+      try {
+        // A tree without odometry (map -> base_link directly, as in rigs): at the scan's stamp.
+        in_map =
+            tf_buffer_->_frameExists(odom_frame_)
+                ? tf_buffer_->lookupTransform(map_frame_, ros::Time(0), msg->header.frame_id,
+                                              msg->header.stamp, odom_frame_)
+                : tf_buffer_->lookupTransform(map_frame_, msg->header.frame_id, msg->header.stamp);
+      } catch (const tf2::ExtrapolationException& e) {
+        if ((ros::Time::now() - msg->header.stamp).toSec() <= scan_wait_) return;  // later
+        NODELET_WARN_THROTTLE(2.0, "%s skipped: no %s -> %s at its stamp: %s", which,
+                              odom_frame_.c_str(), msg->header.frame_id.c_str(), e.what());
+        waiting.pop_front();
+        continue;
+      } catch (const tf2::TransformException& e) {
+        NODELET_WARN_THROTTLE(2.0, "%s skipped: no %s -> %s: %s", which, map_frame_.c_str(),
+                              msg->header.frame_id.c_str(), e.what());
+        waiting.pop_front();  // the scan watchdog then runs out and stops the chair
+        continue;
+      }
+      waiting.pop_front();
+      (this->*use)(*msg, in_map.transform);
+    }
+  }
+
+  /// The forward speed scales the protective field; odometry has moved on: waiting scans.
+  void onOdometry(const nav_msgs::Odometry::ConstPtr& msg) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      supervisor_->onSpeed(msg->header.stamp.toSec(), msg->twist.twist.linear.x);
+    }
+    placeWaiting();
+  }
+
+  /// The rear laser (it guards reverse motion).
+  void onRearScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
+    keep(rear_waiting_, msg);
+    placeWaiting();
   }
 
   void onUserStop(const std_msgs::Empty::ConstPtr&) {
@@ -250,7 +315,10 @@ class SafetyNodelet : public nodelet::Nodelet {
         report.sentence + (report.detail.empty() ? "" : ": ") + report.detail);
   }
 
-  void onTimer(const ros::TimerEvent&) { update(); }
+  void onTimer(const ros::TimerEvent&) {
+    placeWaiting();
+    update();
+  }
 
   void update() {
     geometry_msgs::TransformStamped base_in_map;
@@ -305,17 +373,22 @@ class SafetyNodelet : public nodelet::Nodelet {
     last_limit_detail_ = std::isfinite(limit.speed) ? limit.detail : "";
   }
 
+  static constexpr size_t kMaxWaitingScans = 5;  ///< the subscriptions' queue length
+
   std::string last_limit_detail_;
   std::mutex mutex_;
   std::unique_ptr<SafetySupervisor> supervisor_;
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
-  std::string map_frame_, base_frame_;
+  std::string map_frame_, odom_frame_, base_frame_;
+  double scan_wait_ = 0.3;  ///< [s] a scan waits for odometry at most this long (scan_timeout)
+  std::deque<sensor_msgs::LaserScan::ConstPtr> front_waiting_, rear_waiting_;  ///< its thread
   wheelchair_core::MapLimits map_limits_;
   bool have_status_ = false, localized_ = false;
   std::string why_not_ = "no localizer status yet";
   double driver_fault_grace_ = 0.0;
   std::string driver_sentence_;  ///< the driver's words for its last fault or latched stop
   Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Identity();
+  ros::CallbackQueue queue_;  ///< before the subscriptions and the timer: they outlive it not
   ros::Publisher stop_pub_, status_pub_, speed_limit_pub_;
   std::vector<ros::Subscriber> subs_;
   ros::Timer timer_;
@@ -325,6 +398,8 @@ class SafetyNodelet : public nodelet::Nodelet {
   std::atomic<bool> ready_{false};  ///< set up: a release may check
   bool published_ = false;
   wheelchair_msgs::SafetyStatus last_;
+  std::atomic<bool> running_{false};
+  std::thread thread_;  ///< last: started at the end of onInit, joined first
 };
 
 }  // namespace wheelchair_safety

@@ -260,18 +260,28 @@ class NavigatorNodelet : public nodelet::Nodelet {
 
   // ---- what the chair says ---------------------------------------------------------------------
 
+  /// Any node can publish /map: a grid fromOccupancyGrid refuses (a 4000 x 4000 one beyond
+  /// max_map_cells, a broken one) is refused here with its reason; its throw outside the try
+  /// aborted the whole chair process. The navigator keeps its last good map.
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
-    const wheelchair_core::OccupancyMap map = wheelchair_ros::fromOccupancyGrid(*msg);
-    std::lock_guard<std::mutex> lock(mutex_);
     try {
+      const wheelchair_core::OccupancyMap map = wheelchair_ros::fromOccupancyGrid(*msg);
+      std::lock_guard<std::mutex> lock(mutex_);
       navigator_->setMap(map, chair_.footprint, chair_.inscribedRadius());
     } catch (const std::exception& e) {
-      NODELET_ERROR("navigator: map refused: %s", e.what());
+      NODELET_ERROR("navigator: map refused, keeping the last good one: %s", e.what());
     }
   }
 
+  /// The live layer, as unchecked as /map: a broken one is refused, the last one kept.
   void onObstacles(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
-    const wheelchair_core::OccupancyMap layer = wheelchair_ros::fromOccupancyGrid(*msg);
+    wheelchair_core::OccupancyMap layer;
+    try {
+      layer = wheelchair_ros::fromOccupancyGrid(*msg);
+    } catch (const std::exception& e) {
+      NODELET_ERROR("navigator: obstacle layer refused: %s", e.what());
+      return;
+    }
     std::lock_guard<std::mutex> lock(mutex_);
     handle(navigator_->onObstacleLayer(layer, ros::Time::now().toSec()));
   }
