@@ -147,8 +147,8 @@ class DisplayCarer(unittest.TestCase):
             rospy.logwarn("display carer: deleting a place not checked (known failure, issue 25)")
         else:
             self.click_control(tools[2])
-            d.click(*d.view.to_screen(*room_point("living_room")))
-            time.sleep(1.0)
+            self.assertTrue(d.click_for_view(*d.view.to_screen(*room_point("living_room"))),
+                            "a click did not open the living room")
             d.click(*d.view.to_screen(saved["reading_spot"]["x"], saved["reading_spot"]["y"]))
             form = self.controls("carer_delete_form")
             self.assertEqual(len(form), 2, f"Delete, Keep it: {form}")

@@ -151,9 +151,13 @@ class DisplayScreens(unittest.TestCase):
         rooms = ["living_room", "kitchen", "study", "bathroom", "guest_room", "bedroom"]
         self.wait_hmi(HmiState.SCANNING_ROOMS, "kitchen")
         self.assertEqual(list(self.hmi_state.items), rooms)
+        # How each display draws all the rooms while the HMI scans them (the pointer's clicks
+        # below start from it).
+        overview = {}
         for d, image in zip(self.displays,
                             self.shoot_highlight("scanning_room", HmiState.SCANNING_ROOMS, "kitchen")):
             theme = THEMES["dark" if d.size[0] == 1024 else "light"]
+            overview[d.name] = d.view.values
             x0, y0, x1, y1 = room_box("kitchen")
             frame = np.zeros(image.shape[:2], dtype=bool)
             for colour in theme["highlight_frames"]:
@@ -198,9 +202,10 @@ class DisplayScreens(unittest.TestCase):
                         f"the confirmation did not lapse: {self.hmi_state}")
 
         # Confirming: the pointer opens the kitchen and clicks kitchen_door; the route check answers.
-        for d in self.displays:
-            self.click_world(d, *room_point("kitchen"))
-        time.sleep(1.0)
+        # Each click is made on the frame the display shows: all the rooms again once it has
+        # seen the lapse, then the kitchen once it has opened it (on a loaded machine either
+        # can take longer than a fixed wait).
+        self.open_room("kitchen", overview)
         for d in self.displays:
             self.click_world(d, *place_xy("kitchen_door"))
         self.both(lambda t: t.startswith("Kitchen door is") and t.endswith("m away."), 60.0)
@@ -239,8 +244,7 @@ class DisplayScreens(unittest.TestCase):
         # (one the screen shows as bare floor, not under a name).
         for d in self.displays:
             self.assertTrue(d.wait_status(lambda t: not t.startswith("Stopped: something"), 10.0))
-            self.click_world(d, *room_point("kitchen"))
-        time.sleep(1.0)
+        self.open_room("kitchen", overview)
         for d in self.displays:
             theme = THEMES["dark" if d.size[0] == 1024 else "light"]
             image = d.screenshot(os.path.join(self.shots, f"room_{d.size[0]}.png"))
@@ -248,6 +252,16 @@ class DisplayScreens(unittest.TestCase):
         self.both(lambda t: t.startswith("The chair cannot"), 60.0)
         self.shoot("refused", chair_shown=False)
         self.assertFalse(s.collided)
+
+    def open_room(self, room, overview):
+        """On each display: waits until it shows all the rooms (`overview`, its view then), and
+        opens `room` with a click, waiting until it is drawn."""
+        for d in self.displays:
+            self.assertTrue(d.wait_view(overview[d.name]),
+                            f"{d.name}: not back to all the rooms (status '{d.status}', view "
+                            f"{d.view.values}, all the rooms {overview[d.name]})")
+            self.assertTrue(d.click_for_view(*d.view.to_screen(*room_point(room))),
+                            f"{d.name}: a click did not open {room} (status '{d.status}')")
 
     def tight_spot(self, box, d, image, theme):
         """A free cell in `box` 5-10 cm from the nearest wall cell, shown as bare floor."""
