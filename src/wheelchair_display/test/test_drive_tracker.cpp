@@ -109,7 +109,8 @@ TEST(DriveTracker, AnEndFarFromTheGoalKeepsTheNavigatorsReasonAndAnArrivalItsOwn
   drive.goal("bed", {4, 3, 0}, 0.0);
   drive.route(lShape(), 0.1);
   drive.progress({2.0, 0.0});
-  drive.ended(1.0, 0.15, "Safety stop: the chair's computer paused. Choose a destination to go on.");
+  drive.ended(1.0, 0.15,
+              "Safety stop: the chair's computer paused. Choose a destination to go on.");
   EXPECT_EQ(drive.view().phase, Phase::kFailed);
   EXPECT_EQ(drive.view().sentence,
             "Safety stop: the chair's computer paused. Choose a destination to go on.");

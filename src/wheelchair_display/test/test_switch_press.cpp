@@ -32,8 +32,7 @@ TEST(SwitchPress, WhileTheHmiScansAPressIsTheHmisEvenWithAPointerChoiceWaiting) 
 }
 
 TEST(SwitchPress, WhileTheChairDrivesAPressStopsItWhoeverStartedTheDrive) {
-  for (State s : {State::kIdle, State::kRooms, State::kPlaces, State::kConfirming,
-                  State::kDriving})
+  for (State s : {State::kIdle, State::kRooms, State::kPlaces, State::kConfirming, State::kDriving})
     EXPECT_EQ(pressMeaning(hmi(s), drive(Phase::kDriving)), PressMeaning::kStop) << int(s);
   // The HMI's own drive, not known to the display as one (started before it came up).
   EXPECT_EQ(pressMeaning(hmi(State::kDriving), drive(Phase::kNone)), PressMeaning::kStop);

@@ -157,8 +157,8 @@ Message describe(const DisplayInputs& in) {
   }
   if (in.scan.state == Scan::kDriving) {
     // A drive only the HMI told of: in its own words (the navigator's, as it relays them).
-    m.status = orDefault(hmiWords(in.scan.sentence),
-                         "Driving to " + destinationName(in.scan.place) + ".");
+    m.status =
+        orDefault(hmiWords(in.scan.sentence), "Driving to " + destinationName(in.scan.place) + ".");
     m.prompt = scan_prompt;
     return m;
   }

@@ -101,7 +101,8 @@ void LegacyDriveSource::onNavigatorState(const wheelchair_msgs::NavigatorState::
   using wheelchair_msgs::NavigatorState;
   if (msg->active) {
     // Waiting for something in the way, or blocked: the navigator's words say why.
-    const bool held_up = msg->state == NavigatorState::WAITING || msg->state == NavigatorState::BLOCKED;
+    const bool held_up =
+        msg->state == NavigatorState::WAITING || msg->state == NavigatorState::BLOCKED;
     tracker_.heldUp(held_up ? msg->sentence : "");
   } else if (!navigator_goal_id_.empty()) {
     navigator_goal_id_.clear();
