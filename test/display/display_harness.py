@@ -55,6 +55,7 @@ class View:
     """The display's map view: world (map frame, m) <-> screen (px, y down)."""
 
     def __init__(self, values):
+        self.values = tuple(values)
         (self.scale, self.rotation, wx, wy, sx, sy, mx, my, mw, mh) = values
         self.world_centre = np.array([wx, wy])
         self.screen_centre = np.array([sx, sy])
@@ -114,6 +115,33 @@ class Display:
         the view follows it frame by frame)."""
         before = [v for t, v in self.views if t < since][-1:]
         return before + [v for t, v in self.views if t >= since]
+
+    def click_for_view(self, x, y, timeout=30.0, settle=0.5):
+        """Clicks at (x, y) where the click changes how the map is drawn (a room opened, the
+        overview again) and waits until the display has drawn the new view and kept it for
+        `settle` s: the next click's screen position is then the one of the frame the rider
+        sees, however long the loaded machine takes to draw it. False if no new view came."""
+        before = self.view.values if self.view else None
+        clicked = time.monotonic()
+        self.click(x, y)
+        deadline = clicked + timeout
+        while time.monotonic() < deadline and not rospy.is_shutdown():
+            views = [(t, v) for t, v in self.views if t >= clicked]
+            if views and views[-1][1].values != before and time.monotonic() - views[-1][0] >= settle:
+                return True
+            time.sleep(0.05)
+        return False
+
+    def wait_view(self, values, timeout=30.0, settle=0.5):
+        """True once the display draws the map with the view `values` (View.values) and has
+        kept it for `settle` s (it follows the HMI's state, which it may learn after the test)."""
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline and not rospy.is_shutdown():
+            if self.views and self.views[-1][1].values == values and \
+                    time.monotonic() - self.views[-1][0] >= settle:
+                return True
+            time.sleep(0.05)
+        return False
 
     def wait_up(self, timeout=30.0):
         """True once the X server is known and the node has drawn its first view."""

@@ -104,4 +104,37 @@ TEST(DriveTracker, TheOwnersSentenceIsKeptWithTheOutcome) {
   EXPECT_EQ(drive.view().sentence, "Stopped: the doorway is blocked.");
 }
 
+TEST(DriveTracker, AnEndFarFromTheGoalKeepsTheNavigatorsReasonAndAnArrivalItsOwnWords) {
+  DriveTracker drive(30.0);
+  drive.goal("bed", {4, 3, 0}, 0.0);
+  drive.route(lShape(), 0.1);
+  drive.progress({2.0, 0.0});
+  drive.ended(1.0, 0.15,
+              "Safety stop: the chair's computer paused. Choose a destination to go on.");
+  EXPECT_EQ(drive.view().phase, Phase::kFailed);
+  EXPECT_EQ(drive.view().sentence,
+            "Safety stop: the chair's computer paused. Choose a destination to go on.");
+  drive.goal("bed", {4, 3, 0}, 2.0);
+  drive.progress({4.0, 2.95});
+  drive.ended(3.0, 0.15, "Arrived.");
+  EXPECT_EQ(drive.view().phase, Phase::kArrived);
+  EXPECT_EQ(drive.view().sentence, "");  // "Arrived at Bed." names the place
+}
+
+TEST(DriveTracker, AHeldUpDriveSaysWhyUntilItDrivesOnAndOnlyWhileDriving) {
+  DriveTracker drive(30.0);
+  drive.heldUp("Something is in the way: waiting for it to move.");
+  EXPECT_EQ(drive.view().sentence, "");  // no drive: nothing to hold up
+  drive.goal("bed", {4, 3, 0}, 0.0);
+  drive.heldUp("Something is in the way: waiting for it to move.");
+  EXPECT_EQ(drive.view().phase, Phase::kDriving);
+  EXPECT_EQ(drive.view().sentence, "Something is in the way: waiting for it to move.");
+  drive.heldUp("");
+  EXPECT_EQ(drive.view().sentence, "");
+  drive.heldUp("The way is blocked: the chair waits until it is free.");
+  drive.riderStopped(1.0);
+  EXPECT_EQ(drive.view().phase, Phase::kStoppedByRider);
+  EXPECT_EQ(drive.view().sentence, "");
+}
+
 }  // namespace wheelchair_display

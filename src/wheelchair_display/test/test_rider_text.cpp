@@ -84,6 +84,31 @@ TEST(RiderText, NotKnowingWhereTheChairIsComesBeforeAnyDrive) {
   EXPECT_FALSE(describe(in).show_go);
 }
 
+TEST(RiderText, AHeldUpDriveSaysWhyInTheNavigatorsWordsAndStillHowToStop) {
+  DisplayInputs in = ready();
+  in.drive.phase = DriveView::Phase::kDriving;
+  in.drive.destination = "kitchen";
+  in.drive.distance = 3.21;
+  in.drive.sentence = "Something is in the way: waiting for it to move.";
+  const Message m = describe(in);
+  EXPECT_EQ(m.status, "Something is in the way: waiting for it to move.");
+  EXPECT_EQ(m.tone, Message::Tone::kAttention);
+  EXPECT_EQ(m.prompt, "Press STOP or the switch to stop.");
+}
+
+TEST(RiderText, ADriveOnlyTheHmiToldOfIsInTheHmisWordsWithPlacesAsWords) {
+  DisplayInputs in = ready();
+  in.scan.state = ScanView::State::kDriving;
+  in.scan.place = "kitchen_door";
+  in.scan.sentence = "Going to kitchen_door. Press to stop.";
+  EXPECT_EQ(describe(in).status, "Going to kitchen door. Press to stop.");
+  expectRiderWords(describe(in).status);
+  EXPECT_EQ(describe(in).prompt, "Press to stop.");
+  in.scan.sentence = "";  // an HMI that said nothing yet
+  EXPECT_EQ(describe(in).status, "Driving to Kitchen door.");
+  EXPECT_EQ(hmiWords("the_bed? ok"), "the bed? ok");
+}
+
 TEST(RiderText, EveryOutcomeOfADriveIsToldInRiderWords) {
   DisplayInputs in = ready();
   in.drive.destination = "sofa";

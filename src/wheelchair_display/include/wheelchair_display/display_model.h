@@ -18,6 +18,7 @@ struct ScanView {
   int highlighted = -1;
   std::string room, place;
   double time_left = 0.0, step_time = 0.0;  ///< [s]
+  std::string sentence;  ///< the HMI's last words to the rider (places named by identifier)
 
   /// The highlighted item's name, or "".
   std::string highlightedItem() const {
@@ -63,7 +64,9 @@ struct DriveView {
   Phase phase = Phase::kNone;
   std::string destination;         ///< place id ("kitchen_door") or "" for a spot on the map
   double distance = std::nan("");  ///< [m] route length (reachable) or what is left (driving)
-  std::string sentence;            ///< a rider sentence given with the outcome (navigator), or ""
+  /// The navigator's sentence: with an outcome, how the drive ended; while driving, why it is
+  /// held up (something in the way, the way blocked); "" when it gives none.
+  std::string sentence;
 
   bool outcome() const {
     return phase == Phase::kArrived || phase == Phase::kStoppedByRider || phase == Phase::kFailed ||

@@ -39,10 +39,14 @@ class DriveTracker {
   void route(const std::vector<wheelchair_core::Pose2D>& poses, double now);
   /// The chair is at `position`: the distance left.
   void progress(const Eigen::Vector2d& position);
+  /// While driving: the navigator's sentence of why the drive is held up (something in the
+  /// way, the way blocked), or "" once it drives on.
+  void heldUp(const std::string& sentence);
   void arrived(double now, const std::string& sentence = "");
   /// The drive ended without a verdict on arrival (the controller gave up a few mm or degrees
   /// off): arrived if the chair's last position is within `radius` [m] of the goal, else failed.
-  void ended(double now, double radius);
+  /// `sentence`: the navigator's words for how it ended, told if it did not arrive.
+  void ended(double now, double radius, const std::string& sentence = "");
   void failed(double now, const std::string& sentence = "");
   void refused(double now, const std::string& sentence = "");
   void riderStopped(double now);

@@ -11,6 +11,9 @@ namespace wheelchair_display {
 
 /// A places-file identifier as words, first letter capital: "kitchen_door" -> "Kitchen door".
 std::string riderName(const std::string& id);
+/// The HMI's words (HmiState.sentence) for the screen: the places it names by identifier as
+/// words ("Going to kitchen_door." -> "Going to kitchen door.").
+std::string hmiWords(const std::string& sentence);
 /// "3.2 m" below 10 m, "12 m" from there.
 std::string distanceText(double metres);
 

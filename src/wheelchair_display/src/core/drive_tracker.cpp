@@ -97,11 +97,15 @@ void DriveTracker::arrived(double now, const std::string& sentence) {
   if (view_.phase == Phase::kDriving) end(Phase::kArrived, sentence, now);
 }
 
-void DriveTracker::ended(double now, double radius) {
+void DriveTracker::heldUp(const std::string& sentence) {
+  if (view_.phase == Phase::kDriving) view_.sentence = sentence;
+}
+
+void DriveTracker::ended(double now, double radius, const std::string& sentence) {
   if (goal_ && position_ && (*position_ - goal_->position()).norm() <= radius)
     arrived(now);
   else
-    failed(now);
+    failed(now, sentence);
 }
 
 void DriveTracker::failed(double now, const std::string& sentence) {

@@ -74,6 +74,12 @@ bool driveStatus(const DriveView& drive, Message& m) {
       m.tone = Tone::kAttention;
       return true;
     case Phase::kDriving:
+      if (!drive.sentence.empty()) {  // held up: the navigator says why
+        m.status = orDefault(drive.sentence, "");
+        m.prompt = "Press STOP or the switch to stop.";
+        m.tone = Tone::kAttention;
+        return true;
+      }
       m.status = std::isfinite(drive.distance)
                      ? "Driving to " + where + " \u2014 " + distanceText(drive.distance) + " to go."
                      : "Driving to " + where + ".";
@@ -101,6 +107,13 @@ std::string riderName(const std::string& id) {
   for (char c : id) words += (c == '_' || c == '-') ? ' ' : c;
   if (!words.empty())
     words[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(words[0])));
+  return words;
+}
+
+std::string hmiWords(const std::string& sentence) {
+  std::string words = sentence;
+  std::replace_if(
+      words.begin(), words.end(), [](char c) { return c == '_'; }, ' ');
   return words;
 }
 
@@ -143,7 +156,9 @@ Message describe(const DisplayInputs& in) {
     return m;
   }
   if (in.scan.state == Scan::kDriving) {
-    m.status = "Driving to " + destinationName(in.scan.place) + ".";
+    // A drive only the HMI told of: in its own words (the navigator's, as it relays them).
+    m.status =
+        orDefault(hmiWords(in.scan.sentence), "Driving to " + destinationName(in.scan.place) + ".");
     m.prompt = scan_prompt;
     return m;
   }

@@ -81,6 +81,10 @@ void DisplayNode::tick() {
   const double now = ros::Time::now().toSec();
   drive_.tick(now);
   if (chair_pose_) drive_.progress(chair_pose_->position());
+  // A drive started anywhere (this display, another one, the switch, a tool) ends the pointer's
+  // browsing: afterwards every display shows all the rooms again.
+  if (drive_.driving() && !was_driving_) pointer_room_.clear();
+  was_driving_ = drive_.driving();
   const Message m = message();
   say(announcer_.onStatus(m.status));
   say(announcer_.onScan(scan()));
@@ -170,6 +174,7 @@ void DisplayNode::renderMapImages() {
 }
 
 void DisplayNode::onHmiState(const wheelchair_msgs::HmiState::ConstPtr& msg) {
+  const ScanView before = scan_;
   scan_.state = scanStateOf(msg->state);
   scan_.items = msg->items;
   scan_.highlighted = msg->highlighted;
@@ -177,9 +182,15 @@ void DisplayNode::onHmiState(const wheelchair_msgs::HmiState::ConstPtr& msg) {
   scan_.place = msg->place;
   scan_.time_left = msg->time_left;
   scan_.step_time = msg->step_time;
+  scan_.sentence = msg->sentence;
   scan_received_ = ros::Time::now().toSec();
-  // The switch's choice leads: a room the pointer had opened gives way to the one pressed.
-  if (scan_.switchEngaged()) pointer_room_.clear();
+  // The switch's choice leads: a room the pointer had opened, and a choice of the pointer not
+  // yet confirmed, give way to the one pressed. Only at that press: the HMI's later states (every
+  // highlight step) leave alone what the pointer opens meanwhile (the carer's tools).
+  if (switchTakesOver(before, scan_)) {
+    pointer_room_.clear();
+    withdraw();
+  }
 }
 
 void DisplayNode::onLocalization(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg) {
@@ -197,12 +208,18 @@ void DisplayNode::onSafety(const wheelchair_msgs::SafetyStatus::ConstPtr& msg) {
 }
 
 void DisplayNode::onSwitch(const std_msgs::Empty::ConstPtr&) {
-  // A press while the chair drives always stops it; a press while the rider's pointer choice
-  // waits for its confirmation confirms it. Scanning presses are the HMI's.
-  if (drive_.driving() || scan_.state == ScanView::State::kDriving)
-    stop();
-  else if (drive_.view().phase == DriveView::Phase::kReachable)
-    confirm();
+  // One meaning per press (switch_press.h): the HMI's while it scans, a stop while driving.
+  switch (pressMeaning(scan_, drive_.view())) {
+    case PressMeaning::kStop:
+      stop();
+      break;
+    case PressMeaning::kConfirm:
+      confirm();
+      break;
+    case PressMeaning::kHmis:
+    case PressMeaning::kNothing:
+      break;
+  }
 }
 
 void DisplayNode::openRoom(const std::string& room) {

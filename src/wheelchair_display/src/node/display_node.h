@@ -14,6 +14,7 @@
 #include <wheelchair_display/map_view.h>
 #include <wheelchair_display/rider_text.h>
 #include <wheelchair_display/scene.h>
+#include <wheelchair_display/switch_press.h>
 #include <wheelchair_display/theme.h>
 #include <wheelchair_hmi/places.h>
 
@@ -122,6 +123,7 @@ class DisplayNode {
   DriveTracker drive_;
   LegacyDriveSource drive_source_;
   std::string pointer_room_;
+  bool was_driving_ = false;
   Announcer announcer_;
   Speaker speaker_;
 

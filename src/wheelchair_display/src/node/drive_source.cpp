@@ -52,11 +52,17 @@ void LegacyDriveSource::onGoal(const geometry_msgs::PoseStamped::ConstPtr& msg) 
 
 void LegacyDriveSource::onPath(const nav_msgs::Path::ConstPtr& msg) {
   if (msg->header.stamp + ros::Duration(kStampTolerance) < goal_stamp_) return;
+  // The navigator's drive: an empty route is the navigator stopping the controller (a safety
+  // stop, a wait, the end of the drive), no refusal; its state tells how the drive ends.
+  if (msg->poses.empty() && !navigator_goal_id_.empty()) return;
   tracker_.route(wheelchair_ros::fromPathMsg(*msg), ros::Time::now().toSec());
 }
 
 void LegacyDriveSource::onCertificate(const wheelchair_msgs::PlanCertificate::ConstPtr& msg) {
   if (msg->header.stamp + ros::Duration(kStampTolerance) < goal_stamp_) return;
+  // The navigator's drive: a refused route is the navigator's to answer (it may plan again, or
+  // end the drive with its reason, which its state then tells).
+  if (!navigator_goal_id_.empty()) return;
   if (!msg->success) {
     ROS_INFO("display: the planner refused the goal: %s", msg->failure_reason.c_str());
     tracker_.refused(ros::Time::now().toSec());
@@ -71,7 +77,9 @@ void LegacyDriveSource::onPathStatus(const actionlib_msgs::GoalStatus::ConstPtr&
   if (msg->goal_id.stamp + ros::Duration(kStampTolerance) < goal_stamp_) return;
   const double now = ros::Time::now().toSec();
   if (msg->status == actionlib_msgs::GoalStatus::SUCCEEDED) tracker_.arrived(now);
-  if (msg->status == actionlib_msgs::GoalStatus::ABORTED) {
+  // The navigator's drive: the controller giving up a route is the navigator's to answer (it
+  // waits, plans again, or ends the drive: its state tells).
+  if (msg->status == actionlib_msgs::GoalStatus::ABORTED && navigator_goal_id_.empty()) {
     ROS_INFO("display: the drive ended: %s", msg->text.c_str());
     tracker_.ended(now, kArrivalRadius);
   }
@@ -89,9 +97,17 @@ void LegacyDriveSource::onNavigatorState(const wheelchair_msgs::NavigatorState::
       tracker_.goal(name, goal, now);
       own_goal_.reset();
     }
-  } else if (!msg->active && !navigator_goal_id_.empty()) {
+  }
+  using wheelchair_msgs::NavigatorState;
+  if (msg->active) {
+    // Waiting for something in the way, or blocked: the navigator's words say why.
+    const bool held_up =
+        msg->state == NavigatorState::WAITING || msg->state == NavigatorState::BLOCKED;
+    tracker_.heldUp(held_up ? msg->sentence : "");
+  } else if (!navigator_goal_id_.empty()) {
     navigator_goal_id_.clear();
-    if (tracker_.driving()) tracker_.ended(now, kArrivalRadius);
+    // Idle, its sentence is how the drive ended (the one the HMI tells the rider).
+    if (tracker_.driving()) tracker_.ended(now, kArrivalRadius, msg->sentence);
   }
 }
 

@@ -1,7 +1,8 @@
 // Where the display learns about drives: the navigator's /navigator/state (every drive it owns,
 // whoever started it: the HMI's switch through its action, this display, rviz), any goal on
 // /move_base_simple/goal, the planner's /plan and /plan_certificate, the controller's path
-// status, and any /user_stop.
+// status, and any /user_stop. While the navigator owns a drive, it alone says how the drive
+// goes on or ends: an empty route, a refused plan or the controller giving up are its to answer.
 #pragma once
 
 #include <wheelchair_display/drive_tracker.h>
