@@ -51,7 +51,12 @@ std::optional<Pose2D> LiveSlam::addScan(const wheelchair_core::LaserScan2D& scan
   std::optional<Pose2D> pose;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!slam_.stamps().empty() && scan.stamp < slam_.stamps().back()) return std::nullopt;
+    // The order is kept within a drive: a continued map's new drive may run on a clock that
+    // started again (the simulator's after a restart, a chair whose clock was reset), so its
+    // first scan may be older than the saved drive's last.
+    if (!slam_.awaitingDriveStart() && !slam_.stamps().empty() &&
+        scan.stamp < slam_.stamps().back())
+      return std::nullopt;
     pose = slam_.addScan(scan, odometry);
     if (!pose) return std::nullopt;
     scans_.push_back(std::make_shared<const wheelchair_core::LaserScan2D>(scan));
