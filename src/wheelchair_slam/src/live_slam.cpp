@@ -1,5 +1,6 @@
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_slam/live_slam.h>
+#include <wheelchair_slam/slam_map.h>
 #include <wheelchair_slam/trajectory_io.h>
 
 #include <stdexcept>
@@ -95,7 +96,8 @@ wheelchair_core::OccupancyMap LiveSlam::buildMapNow() const {
     poses = slam_.trajectory();
   }
   wheelchair_mapping::BayesMapper mapper(map_config_);
-  for (size_t i = 0; i < scans.size() && i < poses.size(); ++i) mapper.insert(*scans[i], poses[i]);
+  for (size_t i = 0; i < scans.size() && i < poses.size(); ++i)
+    insertAtPose(mapper, *scans[i], poses[i], i);
   return mapper.map();
 }
 
@@ -112,7 +114,7 @@ void LiveSlam::save(const std::string& dir) const {
   writeTrajectoryCsv(dir + "/trajectory.csv", trajectory);
   wheelchair_mapping::BayesMapper mapper(map_config_);
   for (size_t i = 0; i < scans.size() && i < trajectory.size(); ++i)
-    mapper.insert(scans[i], trajectory[i].pose);
+    insertAtPose(mapper, scans[i], trajectory[i].pose, i);
   wheelchair_core::saveMap(mapper.map(), dir + "/map.yaml");
 }
 
@@ -149,7 +151,7 @@ void LiveSlam::mapPass(std::unique_lock<std::mutex>& lock) {
   lock.unlock();
   if (rebuild) grid_ = std::make_unique<wheelchair_mapping::BayesMapper>(map_config_);
   for (size_t i = 0; i < scans.size() && first + i < poses.size(); ++i)
-    grid_->insert(*scans[i], poses[first + i]);
+    insertAtPose(*grid_, *scans[i], poses[first + i], first + i);
   const wheelchair_core::OccupancyMap map = grid_->map();
   if (on_map_) on_map_(map);
   lock.lock();
