@@ -20,6 +20,10 @@ root; the deployed unit's CPUQuota=15%), the legacy-PC budget, in periods of --c
 (default 10, the unit's CPUQuotaPeriodSec=10ms: with the default 100 ms period a burst of work
 uses the period's 15 ms and every thread then waits 85 ms, past the motor controller's 100 ms
 command watchdog); runs.json and report.md then give the quota's throttling and CPU used.
+
+--slam-map MAP.yaml: the same protocol on a map the chair made (bench/slam_table2: flat mapped
+live by wheelchair_slam, brought into the world frame): the map server serves it (so the
+localizer, the planners and the navigator all work on it) and the figures are drawn on it.
 """
 import argparse
 import json
@@ -155,6 +159,27 @@ def run_protocol(args, out, logs):
     return world, records
 
 
+def use_slam_map(args, out):
+    """--slam-map: a copy of the bring-up file (--bringup or chair_sim.yaml) whose map server
+    serves the SLAM map; args.bringup points at it. Returns its path."""
+    source = pathlib.Path(args.bringup or table2_stack.default_config())
+    config = yaml.safe_load(source.read_text())
+    servers = [n for n in config.get("nodelets", [])
+               if n.get("type") == "wheelchair_mapping/MapServerNodelet"]
+    if len(servers) != 1:
+        raise SystemExit(f"{source}: expected one map server, found {len(servers)}")
+    slam_map = pathlib.Path(args.slam_map).resolve()
+    if not slam_map.exists():
+        raise SystemExit(f"--slam-map {slam_map}: no such file")
+    servers[0]["params"] = dict(servers[0].get("params") or {}, map_file=str(slam_map))
+    target = out / "chair_slam_map.yaml"
+    target.write_text(f"# {source} with the map server on {slam_map} (--slam-map)\n" +
+                      yaml.safe_dump(config, sort_keys=False))
+    args.bringup = str(target)
+    print(f"map server on the SLAM map {slam_map}", flush=True)
+    return target
+
+
 def kld_bench(out, logs, timeout):
     """The KLD package's own benchmark: out/bench/kld.json from `./wheelchair bench kld` when
     there is one (it takes 15-30 min on a loaded 2-core machine), else bench/kld/run now.
@@ -198,6 +223,9 @@ def main():
     parser.add_argument("--cpu-period-ms", type=float, default=10.0,
                         help="the quota's period (cfs_period_us), the unit's CPUQuotaPeriodSec; "
                              "100 (the kernel's and systemd's default) starves the motor watchdog")
+    parser.add_argument("--slam-map", metavar="MAP.yaml",
+                        help="serve this map (flat as wheelchair_slam mapped it, in the world "
+                             "frame) instead of the drawn one")
     parser.add_argument("--no-snapshots", dest="snapshots", action="store_false")
     parser.add_argument("--no-kld-bench", dest="kld_bench", action="store_false")
     parser.add_argument("--kld-bench-timeout", type=float, default=2400.0)
@@ -215,17 +243,23 @@ def main():
         args.speed, args.nice = data.get("speed", args.speed), data.get("nice")
         wall = data.get("wall_time_s")
     else:
+        if args.slam_map:
+            use_slam_map(args, out)
         wall0 = time.time()
         world, records = run_protocol(args, out, logs)
         wall = time.time() - wall0
         finished = [r for r in records if "mse_rc_cm2" in r]
         (out / "runs.json").write_text(json.dumps(
             {"world": world, "speed": args.speed, "nice": args.nice, "wall_time_s": wall,
-             "cpu_quota": getattr(args, "quota_stats", None),
+             "cpu_quota": getattr(args, "quota_stats", None), "slam_map": args.slam_map,
              "runs": records, "summary": protocol.summarize(finished)}))
     bench_rows, bench_problem = (kld_bench(out, logs, args.kld_bench_timeout) if args.kld_bench
                                  else (None, "not run (--no-kld-bench)"))
     map_file = ROOT / "test" / "worlds" / world
+    if args.from_json and data.get("slam_map"):
+        args.slam_map = data["slam_map"]
+    if args.slam_map:
+        map_file = pathlib.Path(args.slam_map).resolve()
     figures.run_figures(records, map_file, out)
     figures.overview_figure(records, map_file, out / "overview.png")
     ok = figures.write_markdown(records, bench_rows, bench_problem, out / "report.md",
@@ -239,6 +273,11 @@ def main():
                     f"process: {reached}/{len(records)} goals reached; CPU used {used} over "
                     f"{stats['wall_s']:.0f} s; throttled in {stats['throttled_periods']} of "
                     f"{stats['periods']} periods ({stats['throttled_s']:.1f} s).\n")
+    if args.slam_map:
+        with open(out / "report.md", "a") as f:
+            f.write(f"\n**Map**: every run on the SLAM map `{args.slam_map}` (served by the map "
+                    f"server: localizer, planners and navigator on it), not the drawn "
+                    f"`{world}`.\n")
     print((out / "report.md").read_text())
     print(f"report written to {out}")
     return 0 if ok else 1

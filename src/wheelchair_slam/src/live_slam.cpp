@@ -1,5 +1,6 @@
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_slam/live_slam.h>
+#include <wheelchair_slam/slam_map.h>
 #include <wheelchair_slam/trajectory_io.h>
 
 #include <stdexcept>
@@ -51,7 +52,12 @@ std::optional<Pose2D> LiveSlam::addScan(const wheelchair_core::LaserScan2D& scan
   std::optional<Pose2D> pose;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!slam_.stamps().empty() && scan.stamp < slam_.stamps().back()) return std::nullopt;
+    // The order is kept within a drive: a continued map's new drive may run on a clock that
+    // started again (the simulator's after a restart, a chair whose clock was reset), so its
+    // first scan may be older than the saved drive's last.
+    if (!slam_.awaitingDriveStart() && !slam_.stamps().empty() &&
+        scan.stamp < slam_.stamps().back())
+      return std::nullopt;
     pose = slam_.addScan(scan, odometry);
     if (!pose) return std::nullopt;
     scans_.push_back(std::make_shared<const wheelchair_core::LaserScan2D>(scan));
@@ -90,7 +96,8 @@ wheelchair_core::OccupancyMap LiveSlam::buildMapNow() const {
     poses = slam_.trajectory();
   }
   wheelchair_mapping::BayesMapper mapper(map_config_);
-  for (size_t i = 0; i < scans.size() && i < poses.size(); ++i) mapper.insert(*scans[i], poses[i]);
+  for (size_t i = 0; i < scans.size() && i < poses.size(); ++i)
+    insertAtPose(mapper, *scans[i], poses[i], i);
   return mapper.map();
 }
 
@@ -107,7 +114,7 @@ void LiveSlam::save(const std::string& dir) const {
   writeTrajectoryCsv(dir + "/trajectory.csv", trajectory);
   wheelchair_mapping::BayesMapper mapper(map_config_);
   for (size_t i = 0; i < scans.size() && i < trajectory.size(); ++i)
-    mapper.insert(scans[i], trajectory[i].pose);
+    insertAtPose(mapper, scans[i], trajectory[i].pose, i);
   wheelchair_core::saveMap(mapper.map(), dir + "/map.yaml");
 }
 
@@ -144,7 +151,7 @@ void LiveSlam::mapPass(std::unique_lock<std::mutex>& lock) {
   lock.unlock();
   if (rebuild) grid_ = std::make_unique<wheelchair_mapping::BayesMapper>(map_config_);
   for (size_t i = 0; i < scans.size() && first + i < poses.size(); ++i)
-    grid_->insert(*scans[i], poses[first + i]);
+    insertAtPose(*grid_, *scans[i], poses[first + i], first + i);
   const wheelchair_core::OccupancyMap map = grid_->map();
   if (on_map_) on_map_(map);
   lock.lock();

@@ -8,6 +8,13 @@
 
 namespace wheelchair_slam {
 
+wheelchair_mapping::InsertResult insertAtPose(wheelchair_mapping::BayesMapper& mapper,
+                                              wheelchair_core::LaserScan2D scan,
+                                              const wheelchair_core::Pose2D& pose, size_t order) {
+  scan.stamp = static_cast<double>(order);
+  return mapper.insert(scan, pose);
+}
+
 wheelchair_mapping::BayesMapper buildMap(const std::vector<wheelchair_core::LaserScan2D>& scans,
                                          const std::vector<wheelchair_core::Pose2D>& poses,
                                          const wheelchair_mapping::MapperConfig& config,
@@ -15,7 +22,7 @@ wheelchair_mapping::BayesMapper buildMap(const std::vector<wheelchair_core::Lase
   wheelchair_mapping::BayesMapper mapper(config);
   size_t refused = 0;
   for (size_t i = 0; i < scans.size() && i < poses.size(); ++i) {
-    if (!mapper.insert(scans[i], poses[i]).inserted) ++refused;
+    if (!insertAtPose(mapper, scans[i], poses[i], i).inserted) ++refused;
   }
   if (skipped) *skipped = refused;
   return mapper;

@@ -3,6 +3,8 @@
 // were cast from.
 #include <gtest/gtest.h>
 #include <wheelchair_slam/graph_slam.h>
+#include <wheelchair_slam/live_slam.h>
+#include <wheelchair_slam/slam_map.h>
 #include <wheelchair_slam/slam_session.h>
 
 #include <cstdio>
@@ -127,6 +129,49 @@ TEST(SlamSession, ASecondDriveWithItsOwnOdometryFrameContinuesTheMapToAFewCentim
                                  wheelchair_core::between(second.odometry[0], o)));
   }
   EXPECT_GT(maxError(dead_reckoning, second.truth, map_to_world), 1.0);
+}
+
+TEST(SlamSession, ALiveContinuedMapTakesANewDriveOnAClockThatStartedAgain) {
+  // The saved drive ran from t = 1000 s; the new one's clock starts at 0 (the simulator's after
+  // a restart): its scans are used once located, and the order is kept within the new drive.
+  const Drive first = drive(1, 8, {0, 0, 0}, 1000.0);
+  GraphSlam one{SlamConfig()};
+  for (size_t i = 0; i < first.scans.size(); ++i) one.addScan(first.scans[i], first.odometry[i]);
+  one.finish();
+  const std::string dir = tempDir("slam_session_clock");
+  saveSlam(dir, one, first.scans);
+  const Pose2D map_to_world =
+      wheelchair_core::compose(first.truth[0], wheelchair_core::inverse(first.odometry[0]));
+
+  const Drive second = drive(1, 9, {2.0, 1.0, -0.5}, 0.0);
+  const Pose2D true_start =
+      wheelchair_core::compose(wheelchair_core::inverse(map_to_world), second.truth[0]);
+  LiveSlam live(SlamConfig(), wheelchair_mapping::MapperConfig(), 1.0, nullptr,
+                loadSlam(dir, SlamConfig()),
+                wheelchair_core::compose(true_start, {0.1, -0.1, 0.03}));
+  const size_t n = 60;
+  for (size_t i = 0; i < n; ++i) {
+    ASSERT_TRUE(live.addScan(second.scans[i], second.odometry[i])) << "scan " << i;
+  }
+  EXPECT_FALSE(live.addScan(second.scans[n - 2], second.odometry[n - 2]))
+      << "within the new drive a scan older than the last is not used";
+  ASSERT_TRUE(live.waitIdle(std::chrono::seconds(60)));
+  EXPECT_EQ(live.stats().drives, 2u);
+  const auto estimate = live.trajectory();
+  ASSERT_EQ(estimate.size(), first.scans.size() + n);
+  const std::vector<Pose2D> new_part(estimate.begin() + first.scans.size(), estimate.end());
+  EXPECT_LT(maxError(new_part, {second.truth.begin(), second.truth.begin() + n}, map_to_world),
+            0.05);
+  // The map holds the new drive's scans too, though they are older than the saved drive's.
+  wheelchair_mapping::BayesMapper saved_only(wheelchair_mapping::MapperConfig{});
+  for (size_t i = 0; i < first.scans.size(); ++i)
+    ASSERT_TRUE(insertAtPose(saved_only, first.scans[i], estimate[i], i).inserted);
+  EXPECT_NE(live.buildMapNow().data, saved_only.map().data);
+  size_t skipped = 99;
+  std::vector<wheelchair_core::LaserScan2D> both(first.scans.begin(), first.scans.end());
+  both.insert(both.end(), second.scans.begin(), second.scans.begin() + n);
+  buildMap(both, estimate, wheelchair_mapping::MapperConfig{}, &skipped);
+  EXPECT_EQ(skipped, 0u) << "no scan of either drive is refused for its clock";
 }
 
 TEST(SlamSession, ADriveStartedWhereTheMapHasNoKeyframeIsNotLocatedAndAddsNothing) {

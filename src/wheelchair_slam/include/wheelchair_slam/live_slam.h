@@ -47,7 +47,7 @@ class LiveSlam {
 
   /// Adds a scan with the sensor's odometry pose at its stamp; returns its pose in the map
   /// frame, or nullopt when it was not used (a continued map not yet located, a stamp older
-  /// than the last scan's, non-finite odometry).
+  /// than the last scan's of the same drive, non-finite odometry).
   std::optional<wheelchair_core::Pose2D> addScan(const wheelchair_core::LaserScan2D& scan,
                                                  const wheelchair_core::Pose2D& odometry);
   /// map -> odometry frame (identity before the first scan).

@@ -13,7 +13,16 @@
 
 namespace wheelchair_slam {
 
-/// Every scan inserted at its pose (scans the mapper refuses are counted in `skipped`).
+/// One scan into a map rebuilt from poses, as scan number `order` of it: the mapper's order
+/// check (a stamp older than the last is refused, right for a live map from tf) is met by
+/// stamping the copy with `order`; a map at given poses does not depend on time, and the scans
+/// of a continued map's drives may come from clocks that started again.
+wheelchair_mapping::InsertResult insertAtPose(wheelchair_mapping::BayesMapper& mapper,
+                                              wheelchair_core::LaserScan2D scan,
+                                              const wheelchair_core::Pose2D& pose, size_t order);
+
+/// Every scan inserted at its pose (insertAtPose; scans the mapper refuses, e.g. non-finite
+/// poses, are counted in `skipped`).
 wheelchair_mapping::BayesMapper buildMap(const std::vector<wheelchair_core::LaserScan2D>& scans,
                                          const std::vector<wheelchair_core::Pose2D>& poses,
                                          const wheelchair_mapping::MapperConfig& config,
