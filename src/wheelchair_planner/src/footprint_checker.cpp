@@ -104,8 +104,10 @@ FootprintContact FootprintChecker::clearance(const Pose2D& pose, double stop_bel
   best.clearance = 1e9;
   // The interpolated distance field changes by at most sqrt(2) per metre (each axis by at most
   // 1): after a sample at distance d, the samples within (d - enough) / sqrt(2) of boundary
-  // length are all at least `enough` away and are skipped (below `enough` the value is exact).
+  // length are all at least `enough` away and are skipped (below `enough` the value is exact,
+  // above it a lower bound: the skipped samples count with their bound).
   const size_t n = boundary_.size();
+  FootprintContact skipped{1e9, 0.0, 0.0};
   for (size_t i = 0; i < n;) {
     const Eigen::Vector2d p = place(pose, c, s, boundary_[i]);
     const double d = cspace_.distanceAt(p.x(), p.y());
@@ -114,9 +116,18 @@ FootprintContact FootprintChecker::clearance(const Pose2D& pose, double stop_bel
       if (d < stop_below) return best;
     }
     const double reach = boundary_s_[i] + (d - enough) * M_SQRT1_2;
+    const size_t from = i;
     ++i;
     while (i < n && boundary_s_[i] < reach) ++i;
+    if (i > from + 1) {
+      const double bound = d - M_SQRT2 * (boundary_s_[i - 1] - boundary_s_[from]);
+      if (bound < skipped.clearance) {
+        const Eigen::Vector2d q = place(pose, c, s, boundary_[i - 1]);
+        skipped = {bound, q.x(), q.y()};
+      }
+    }
   }
+  if (skipped.clearance < best.clearance) best = skipped;
   // An obstacle cell wholly inside the body: the boundary does not see it, the interior does.
   for (const Column& col : columns_) {
     const Eigen::Vector2d centre = place(pose, c, s, col.centre);

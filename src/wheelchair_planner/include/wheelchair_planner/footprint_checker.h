@@ -34,8 +34,8 @@ class FootprintChecker {
   /// the polygon gives -resolution. Stops early once below `stop_below` (then the value is only
   /// known to be below it), and returns a lower bound at once when the disc about base_link
   /// that encloses the body, or else every disc of a cover of the body by a few smaller discs,
-  /// is clear by at least `enough` (or, above `enough`, a value that is at least `enough`:
-  /// boundary samples that must be farther than `enough` are skipped).
+  /// is clear by at least `enough` (boundary samples that must be farther than `enough` are
+  /// skipped and count with that bound: above `enough` the value is a lower bound).
   FootprintContact clearance(const Pose2D& pose, double stop_below = -1e9,
                              double enough = 1e9) const;
 
