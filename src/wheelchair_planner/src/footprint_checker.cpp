@@ -51,6 +51,12 @@ FootprintChecker::FootprintChecker(const ConfigSpace& cspace, const Polygon& pol
     const int n = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * res))));
     for (int k = 0; k < n; ++k) boundary_.push_back(a + (static_cast<double>(k) / n) * (b - a));
   }
+  // Arc length along the boundary to each sample (the skip in clearance()).
+  double along = 0.0;
+  for (size_t i = 0; i < boundary_.size(); ++i) {
+    if (i > 0) along += (boundary_[i] - boundary_[i - 1]).norm();
+    boundary_s_.push_back(along);
+  }
   circumscribed_radius_ = wheelchair_core::circumscribedRadius(polygon);
   inscribed_radius_ = wheelchair_core::inscribedRadius(polygon);
   // Interior: a lattice of 0.7 cell spacing (every cell the polygon covers holds a sample),
@@ -96,14 +102,32 @@ FootprintContact FootprintChecker::clearance(const Pose2D& pose, double stop_bel
   }
   FootprintContact best;
   best.clearance = 1e9;
-  for (const Eigen::Vector2d& v : boundary_) {
-    const Eigen::Vector2d p = place(pose, c, s, v);
+  // The interpolated distance field changes by at most sqrt(2) per metre (each axis by at most
+  // 1): after a sample at distance d, the samples within (d - enough) / sqrt(2) of boundary
+  // length are all at least `enough` away and are skipped (below `enough` the value is exact,
+  // above it a lower bound: the skipped samples count with their bound).
+  const size_t n = boundary_.size();
+  FootprintContact skipped{1e9, 0.0, 0.0};
+  for (size_t i = 0; i < n;) {
+    const Eigen::Vector2d p = place(pose, c, s, boundary_[i]);
     const double d = cspace_.distanceAt(p.x(), p.y());
     if (d < best.clearance) {
       best = {d, p.x(), p.y()};
       if (d < stop_below) return best;
     }
+    const double reach = boundary_s_[i] + (d - enough) * M_SQRT1_2;
+    const size_t from = i;
+    ++i;
+    while (i < n && boundary_s_[i] < reach) ++i;
+    if (i > from + 1) {
+      const double bound = d - M_SQRT2 * (boundary_s_[i - 1] - boundary_s_[from]);
+      if (bound < skipped.clearance) {
+        const Eigen::Vector2d q = place(pose, c, s, boundary_[i - 1]);
+        skipped = {bound, q.x(), q.y()};
+      }
+    }
   }
+  if (skipped.clearance < best.clearance) best = skipped;
   // An obstacle cell wholly inside the body: the boundary does not see it, the interior does.
   for (const Column& col : columns_) {
     const Eigen::Vector2d centre = place(pose, c, s, col.centre);

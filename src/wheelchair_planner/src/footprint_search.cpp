@@ -54,6 +54,13 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
   std::vector<std::unique_ptr<SearchAttempt>> runs;
   for (const FootprintSearchParams::Attempt& a : params.attempts)
     runs.push_back(std::make_unique<SearchAttempt>(checker, start, goal, params, a, sweep));
+  // Each run tries to join the trees of the runs searching the other way.
+  for (const auto& run : runs) {
+    std::vector<const SearchAttempt*> partners;
+    for (const auto& other : runs)
+      if (other->backward() != run->backward()) partners.push_back(other.get());
+    run->setPartners(std::move(partners));
+  }
   const auto spent = [&] {
     size_t n = 0;
     for (const auto& r : runs) n += r->expansions();
@@ -63,11 +70,16 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
   const SearchAttempt* found = nullptr;
   bool progress = true;
   // Round after round, each setting that can go on gets a slice, in order (the least greedy
-  // first: where it succeeds its paths keep more clearance), until one finds a path.
+  // first: where it succeeds its paths keep more clearance), until one finds a path. From the
+  // second round on, the forward and backward runs also try to join their trees.
+  bool first_round = true;
   while (!found && progress && Clock::now() < deadline && spent() < budget) {
     progress = false;
+    if (!first_round)
+      for (const auto& run : runs) run->startMeeting();
     for (const auto& run : runs) {
       if (run->status() != SearchAttempt::Status::kRunning) continue;
+      if (!first_round && run->oneSlice()) continue;
       const size_t left = budget - std::min(budget, spent());
       if (left == 0 || Clock::now() >= deadline) break;
       const size_t slice = std::min(left, static_cast<size_t>(params.attempt_expansions));
@@ -85,6 +97,7 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
         return result;
       }
     }
+    first_round = false;
   }
   result.time = std::chrono::duration<double>(Clock::now() - t0).count();
   result.expansions = spent();
@@ -98,12 +111,15 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
   }
   // Nothing fits: say what was tried, how far the best setting came and what blocked it there,
   // and the narrowest passage on the way.
+  // (A backward run's approach is to the start: not what the rider asked about.)
   const SearchAttempt* best = runs.front().get();
   for (const auto& run : runs)
-    if (run->closestApproach() < best->closestApproach()) best = run.get();
+    if (!run->backward() && (best->backward() || run->closestApproach() < best->closestApproach()))
+      best = run.get();
   bool budget_spent = false;
   for (const auto& run : runs)
-    budget_spent = budget_spent || run->status() == SearchAttempt::Status::kRunning;
+    budget_spent =
+        budget_spent || (run->status() == SearchAttempt::Status::kRunning && !run->oneSlice());
   std::ostringstream os;
   os.precision(3);
   os << summary(params, runs.size(), result.expansions, result.time, budget_spent,

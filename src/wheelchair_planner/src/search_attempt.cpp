@@ -45,14 +45,16 @@ SearchAttempt::SearchAttempt(const FootprintChecker& checker, const Pose2D& star
                              const FootprintSearchParams::Attempt& attempt, const SweepModel& sweep)
     : checker_(checker),
       cs_(checker.configSpace()),
-      start_(start),
-      goal_(goal),
+      start_(attempt.backward ? goal : start),
+      goal_(attempt.backward ? start : goal),
+      chair_start_(start),
+      chair_goal_(goal),
       params_(params),
       attempt_(attempt),
       sweep_(sweep),
       bin_angle_(2.0 * M_PI / params.heading_bins),
-      closest_pose_(start),
-      closest_block_{kInf, start.x, start.y} {
+      closest_pose_(start_),
+      closest_block_{kInf, start_.x, start_.y} {
   curvatures_.push_back(0.0);
   for (const double r : params.radii) {
     curvatures_.push_back(1.0 / r);
@@ -72,11 +74,11 @@ bool SearchAttempt::prepare(std::string& reason) {
     reason = "footprint search: the goal is not reachable even for the chair's axle disc";
     return false;
   }
-  rule_ = clearanceRule(checker_, start_, params_.min_clearance);
+  rule_ = clearanceRule(checker_, chair_start_, params_.min_clearance);
   if (rule_.start_clearance <= 0.0) {
     std::ostringstream os;
     os.precision(3);
-    const FootprintContact at_start = checker_.clearance(start_);
+    const FootprintContact at_start = checker_.clearance(chair_start_);
     os << "footprint search: at the start the body overlaps an obstacle at (" << at_start.x << ", "
        << at_start.y << ")";
     reason = os.str();
@@ -97,6 +99,8 @@ double SearchAttempt::heuristic(const Pose2D& p) const {
   if (!cs_.worldToCell(p.x, p.y, ix, iy)) return kInf;
   return attempt_.heuristic_weight * h_[cs_.index(ix, iy)];
 }
+
+int64_t SearchAttempt::cellKey(const Pose2D& p) const { return key(p, false) / 2; }
 
 int64_t SearchAttempt::key(const Pose2D& p, bool reverse) const {
   const int64_t ix = static_cast<int64_t>(std::floor(p.x / params_.xy_bin)) + (1 << 20);
@@ -119,6 +123,7 @@ void SearchAttempt::push(const Node& n) {
   if (it != best_g_.end() && it->second <= n.g + 1e-9) return;
   best_g_[k] = n.g;
   nodes_.push_back(n);
+  if (!partners_.empty()) by_cell_[cellKey(n.pose)].push_back(static_cast<int>(nodes_.size()) - 1);
   open_.push({n.g + heuristic(n.pose), static_cast<int>(nodes_.size()) - 1});
 }
 
@@ -126,9 +131,10 @@ void SearchAttempt::seedStart() {
   push({start_, 0.0, -1, 0.0, false, false, false, 0, 0.0});
   for (const double dir : {1.0, -1.0}) {
     for (int k = 1; k <= params_.heading_bins / 2; ++k) {
+      // A backward run begins at the goal: its rotations there are the chair's last motion.
       const Pose2D p{start_.x, start_.y, start_.yaw + dir * k * bin_angle_};
       FootprintContact c;
-      if (!poseOk(p, true, c)) break;
+      if (!poseOk(p, !attempt_.backward, c)) break;
       push({p, params_.rotation_cost * k * bin_angle_, 0, 0.0, true, false, false, 0, 0.0});
     }
   }
@@ -156,27 +162,39 @@ bool SearchAttempt::acceptCandidate(int idx) {
   // Cheap first: the final rotation to the goal heading, every 5 degrees.
   bool rotation_ok = true;
   FootprintContact c;
+  // (A backward run ends at the chair's start: this is the rotation it begins with.)
   for (const Pose2D& p : wheelchair_controller::rotationInPlace(
            goal_.x, goal_.y, nodes_[idx].pose.yaw, goal_.yaw, 5.0 * M_PI / 180.0))
-    rotation_ok = rotation_ok && poseOk(p, false, c);
+    rotation_ok = rotation_ok && poseOk(p, attempt_.backward, c);
   if (!rotation_ok) {
     std::ostringstream os;
     os.precision(3);
-    os << "the body would hit at (" << c.x << ", " << c.y
-       << ") rotating in place to the goal heading";
+    os << "the body would hit at (" << c.x << ", " << c.y << ") rotating in place "
+       << (attempt_.backward ? "at the start" : "to the goal heading");
     last_candidate_reason_ = os.str();
     return false;
   }
   return acceptPath(pathTo(idx));
 }
 
+std::vector<Pose2D> SearchAttempt::drivenPath(std::vector<Pose2D> path) const {
+  if (!attempt_.backward || path.size() < 2) return path;
+  // The poses carry the chair's heading, so the same poses in the other order are the same
+  // motion driven the other way: each forward piece becomes a reverse one and back.
+  std::reverse(path.begin(), path.end());
+  path.front().yaw = path[1].yaw;  // as pathTo: the controller turns at rest to the path
+  path.back().yaw = chair_goal_.yaw;
+  return path;
+}
+
 bool SearchAttempt::acceptPath(std::vector<Pose2D> path) {
-  const SweepCheck check = checkSweep(checker_, sweep_.sweep(start_, path), rule_);
+  std::vector<Pose2D> driven = drivenPath(std::move(path));
+  const SweepCheck check = checkSweep(checker_, sweep_.sweep(chair_start_, driven), rule_);
   if (!check.ok) {
     last_candidate_reason_ = check.reason;
     return false;
   }
-  result_.path = std::move(path);
+  result_.path = std::move(driven);
   result_.sweep = check;
   return true;
 }
@@ -186,8 +204,9 @@ bool SearchAttempt::tryAnalytic(int idx, const Node& node) {
   if (shot.poses.size() < 2) return false;
   const bool cusp = node.moved && shot.first_reverse != node.reverse;
   if (node.cusps + shot.cusps + (cusp ? 1 : 0) > params_.max_cusps) return false;
-  if (shot.reversed > 0.0 && !params_.reverse) return false;
-  if (node.reversed + shot.reversed > params_.max_reverse_length + 1e-9) return false;
+  const double reversed = attempt_.backward ? shot.length - shot.reversed : shot.reversed;
+  if (reversed > 1e-9 && !params_.reverse) return false;
+  if (node.reversed + reversed > params_.max_reverse_length + 1e-9) return false;
   // A stretch too short to drive between two stops (the controller needs some length to
   // accelerate and brake): not worth a cusp.
   if (shot.cusps > 0 && shot.shortest_run < 2.0 * attempt_.step) return false;
@@ -199,17 +218,19 @@ bool SearchAttempt::tryAnalytic(int idx, const Node& node) {
   path.insert(path.end(), shot.poses.begin() + 1, shot.poses.end());
   if (!acceptPath(std::move(path))) return false;
   result_.cusps = node.cusps + shot.cusps + (cusp ? 1 : 0);
-  result_.reversed_length = node.reversed + shot.reversed;
+  result_.reversed_length = node.reversed + reversed;
   return true;
 }
 
 void SearchAttempt::expand(int idx, const Node& node) {
   for (const bool reverse : {false, true}) {
-    if (reverse && !params_.reverse) continue;
+    const bool driven_reverse = drivenInReverse(reverse);
+    if (driven_reverse && !params_.reverse) continue;
     // A change of direction (a cusp: the chair stops) and the reversed metres are limited.
     const bool cusp = node.moved && reverse != node.reverse;
     if (cusp && node.cusps >= params_.max_cusps) continue;
-    if (reverse && node.reversed + attempt_.step > params_.max_reverse_length + 1e-9) continue;
+    if (driven_reverse && node.reversed + attempt_.step > params_.max_reverse_length + 1e-9)
+      continue;
     const double d = reverse ? -attempt_.step : attempt_.step;
     for (const double kappa : curvatures_) {
       // Coarse here (5 cm / 5 degrees); a candidate's whole sweep is verified finely.
@@ -240,12 +261,75 @@ void SearchAttempt::expand(int idx, const Node& node) {
       // every cusp (stop, change of direction) cusp_cost metres.
       const double cost = attempt_.step *
                               (1.0 + penalty(cmin) + params_.turn_weight * std::abs(kappa)) *
-                              (reverse ? params_.reverse_cost : 1.0) +
+                              (driven_reverse ? params_.reverse_cost : 1.0) +
                           (cusp ? params_.cusp_cost : 0.0);
       push({end, node.g + cost, idx, kappa, false, true, reverse, node.cusps + (cusp ? 1 : 0),
-            node.reversed + (reverse ? attempt_.step : 0.0)});
+            node.reversed + (driven_reverse ? attempt_.step : 0.0)});
     }
   }
+}
+
+bool SearchAttempt::tryMeet(int idx, const Node& node) {
+  if (!meeting_ || partners_.empty() || meet_tries_ >= params_.max_candidates) return false;
+  const int64_t ix = static_cast<int64_t>(std::floor(node.pose.x / params_.xy_bin));
+  const int64_t iy = static_cast<int64_t>(std::floor(node.pose.y / params_.xy_bin));
+  const int bins = params_.heading_bins;
+  int64_t it = static_cast<int64_t>(std::lround(node.pose.yaw / bin_angle_)) % bins;
+  if (it < 0) it += bins;
+  for (const SearchAttempt* other : partners_) {
+    // Forward run's node f (start ... f), backward run's node b (b ... goal, as driven).
+    const SearchAttempt& fwd = attempt_.backward ? *other : *this;
+    const SearchAttempt& bwd = attempt_.backward ? *this : *other;
+    for (int64_t dx = -1; dx <= 1; ++dx) {
+      for (int64_t dy = -1; dy <= 1; ++dy) {
+        for (int64_t dt = -1; dt <= 1; ++dt) {
+          const int64_t t = ((it + dt) % bins + bins) % bins;
+          const int64_t k =
+              ((ix + dx + (1 << 20)) * (int64_t{1} << 22) + (iy + dy + (1 << 20))) * bins + t;
+          const auto found = other->by_cell_.find(k);
+          if (found == other->by_cell_.end()) continue;
+          for (const int j : found->second) {
+            const int fi = attempt_.backward ? j : idx, bi = attempt_.backward ? idx : j;
+            const Node& f = fwd.nodes_[fi];
+            const Node& b = bwd.nodes_[bi];
+            // As driven: f is reached moving f.reverse, the chair leaves b in reverse if b's
+            // primitive was forward in the backward run's direction.
+            const bool f_rev = f.reverse, b_rev = bwd.drivenInReverse(b.reverse);
+            const bool join_rev = f.moved ? f_rev : b_rev;
+            if (!joinsGoalAlongTheMotion(f.pose, join_rev, b.pose, params_)) continue;
+            const int cusps = f.cusps + b.cusps + (f.moved && f_rev != join_rev ? 1 : 0) +
+                              (b.moved && b_rev != join_rev ? 1 : 0);
+            const double join = std::hypot(b.pose.x - f.pose.x, b.pose.y - f.pose.y);
+            const double reversed = f.reversed + b.reversed + (join_rev ? join : 0.0);
+            if (cusps > params_.max_cusps || reversed > params_.max_reverse_length + 1e-9) continue;
+            if (join_rev && !params_.reverse) continue;
+            FootprintContact c;
+            if (!poseOk({0.5 * (f.pose.x + b.pose.x), 0.5 * (f.pose.y + b.pose.y), f.pose.yaw},
+                        false, c))
+              continue;
+            std::vector<Pose2D> path = fwd.pathTo(fi, false);
+            std::vector<Pose2D> rest = bwd.pathTo(bi, false);
+            std::reverse(rest.begin(), rest.end());
+            path.insert(path.end(), rest.begin(), rest.end());
+            if (path.size() < 2) continue;
+            path.front().yaw = path[1].yaw;
+            path.back().yaw = chair_goal_.yaw;
+            ++meet_tries_;
+            // acceptPath takes the path in this run's own direction.
+            if (attempt_.backward) std::reverse(path.begin(), path.end());
+            const bool ok = acceptPath(std::move(path));
+            if (ok) {
+              result_.cusps = cusps;
+              result_.reversed_length = reversed;
+              return true;
+            }
+            if (meet_tries_ >= params_.max_candidates) return false;
+          }
+        }
+      }
+    }
+  }
+  return false;
 }
 
 std::string SearchAttempt::failureReason() const {
@@ -269,7 +353,10 @@ SearchAttempt::Status SearchAttempt::advance(size_t expansions,
   if (status_ != Status::kRunning) return status_;
   if (!started_) {
     started_ = true;
-    if (!prepare(result_.reason)) return status_ = Status::kRefused;
+    // A backward run's field is to the chair's start, which may be tighter than the axle disc
+    // (parked by a table): then only that run ends, the forward runs decide.
+    if (!prepare(result_.reason))
+      return status_ = attempt_.backward ? Status::kExhausted : Status::kRefused;
     seedStart();
   }
   const size_t stop_at = expansions_ + expansions;
@@ -293,6 +380,10 @@ SearchAttempt::Status SearchAttempt::advance(size_t expansions,
         result_.found = true;
         return status_ = Status::kFound;
       }
+    }
+    if (tryMeet(idx, node)) {
+      result_.found = true;
+      return status_ = Status::kFound;
     }
     if (joinsGoalAlongTheMotion(node.pose, node.reverse, goal_, params_)) {
       if (acceptCandidate(idx)) {

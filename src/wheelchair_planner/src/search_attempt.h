@@ -44,6 +44,17 @@ class SearchAttempt {
   std::string failureReason() const;
   /// How close the run came to the goal [m of geodesic distance] (for the summary).
   double closestApproach() const { return closest_ / attempt_.heuristic_weight; }
+  /// The run searches from the goal to the start (FootprintSearchParams::Attempt::backward).
+  bool backward() const { return attempt_.backward; }
+  /// The run gets the first round's slice only (FootprintSearchParams::Attempt::one_slice).
+  bool oneSlice() const { return attempt_.one_slice; }
+  /// Runs of the other direction whose trees this run tries to join at each expansion (a
+  /// bidirectional search: the way out of a side room backwards and the way along the hallway
+  /// to the goal are each found quickly, together by neither alone). All must outlive this.
+  void setPartners(std::vector<const SearchAttempt*> partners) { partners_ = std::move(partners); }
+  /// Joins are tried only once this is set (footprint_search.cpp: after every run's first
+  /// slice, so that a forward path found alone is preferred to a joined one).
+  void startMeeting() { meeting_ = true; }
 
  private:
   struct Node {
@@ -53,9 +64,9 @@ class SearchAttempt {
     double kappa = 0.0;
     bool rotation = false;  ///< reached from the parent by an in-place rotation (start only)
     bool moved = false;     ///< reached by a primitive (not the start or a start rotation)
-    bool reverse = false;   ///< that primitive was driven in reverse
+    bool reverse = false;   ///< that primitive runs in reverse in the search's own direction
     int cusps = 0;          ///< direction changes on the way here
-    double reversed = 0.0;  ///< [m] driven in reverse on the way here
+    double reversed = 0.0;  ///< [m] that the chair will drive in reverse on the way here
   };
 
   /// The cells, the heuristic field and the clearance rule; false with the reason if the search
@@ -68,13 +79,25 @@ class SearchAttempt {
   bool acceptCandidate(int idx);
   /// The motion primitives from node `idx` (a copy of it in `node`).
   void expand(int idx, const Node& node);
+  /// Joins node `idx` to a node of a partner run at about the same pose and heading by a short
+  /// straight piece along the motion; true (and `result_` filled) if the joined path keeps the
+  /// limits on cusps and reversing and its whole executed sweep passes.
+  bool tryMeet(int idx, const Node& node);
+  /// Cell and heading bin of a pose, without the direction (where two runs may meet).
+  int64_t cellKey(const Pose2D& p) const;
   /// Analytic expansion: the Reeds-Shepp path from node `idx` to the goal pose; true (and
   /// `result_` filled) if it keeps the clearance, the limits on cusps and reversing, and the
   /// whole executed sweep passes.
   bool tryAnalytic(int idx, const Node& node);
-  /// True (and `result_` filled) if the executed sweep of `path` keeps the clearance; else its
-  /// reason is kept for the failure message.
+  /// True (and `result_` filled) if the executed sweep of `path` (from the search's start to
+  /// its goal: drivenPath) keeps the clearance; else its reason is kept for the failure message.
   bool acceptPath(std::vector<Pose2D> path);
+  /// The plan the chair drives for a path of this run: a backward run's path reversed (the
+  /// chair's start first, the goal with its heading last); a forward run's as it is.
+  std::vector<Pose2D> drivenPath(std::vector<Pose2D> path) const;
+  /// A primitive of this run that runs `reverse` in the search's direction is driven in
+  /// reverse by the chair.
+  bool drivenInReverse(bool reverse) const { return reverse != attempt_.backward; }
 
   /// Clearance of a pose if it keeps what the rule requires there, else the blocking contact.
   bool poseOk(const Pose2D& p, bool start_rotation, FootprintContact& c) const;
@@ -89,7 +112,9 @@ class SearchAttempt {
 
   const FootprintChecker& checker_;
   const ConfigSpace& cs_;
+  /// Where the search begins and ends: the chair's start and goal, swapped in a backward run.
   const Pose2D start_, goal_;
+  const Pose2D chair_start_, chair_goal_;  ///< the plan's own start and goal
   const FootprintSearchParams& params_;
   const FootprintSearchParams::Attempt attempt_;
   const SweepModel& sweep_;
@@ -105,6 +130,10 @@ class SearchAttempt {
   std::vector<Node> nodes_;
   std::unordered_map<int64_t, double> best_g_;
   std::unordered_map<int64_t, bool> expanded_;
+  std::unordered_map<int64_t, std::vector<int>> by_cell_;  ///< nodes per cellKey
+  std::vector<const SearchAttempt*> partners_;
+  int meet_tries_ = 0;  ///< joined paths whose sweep was checked
+  bool meeting_ = false;
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open_;
 

@@ -7,6 +7,8 @@
 #include <wheelchair_core/config.h>
 #include <wheelchair_core/occupancy_map.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -120,5 +122,43 @@ class ConfigSpace {
   float max_transform_ = 0.0f;
   int revision_ = 0;
 };
+
+// Inline: the footprint checker calls these ~10^7 times per search.
+inline void ConfigSpace::worldToGrid(double x, double y, double& gx, double& gy) const {
+  gx = (x - origin_x_) / resolution_ - 0.5;
+  gy = (y - origin_y_) / resolution_ - 0.5;
+}
+
+inline void ConfigSpace::gridToWorld(double gx, double gy, double& x, double& y) const {
+  x = origin_x_ + (gx + 0.5) * resolution_;
+  y = origin_y_ + (gy + 0.5) * resolution_;
+}
+
+inline bool ConfigSpace::worldToCell(double x, double y, int& ix, int& iy) const {
+  if (!std::isfinite(x) || !std::isfinite(y)) return false;
+  const double fx = std::floor((x - origin_x_) / resolution_);
+  const double fy = std::floor((y - origin_y_) / resolution_);
+  if (fx < 0 || fy < 0 || fx >= width_ || fy >= height_) return false;
+  ix = static_cast<int>(fx);
+  iy = static_cast<int>(fy);
+  return true;
+}
+
+inline double ConfigSpace::distanceAt(double x, double y) const {
+  int cx, cy;
+  if (!worldToCell(x, y, cx, cy)) return 0.0;  // outside the map is an obstacle
+  double gx, gy;
+  worldToGrid(x, y, gx, gy);
+  gx = std::clamp(gx, 0.0, width_ - 1.0);
+  gy = std::clamp(gy, 0.0, height_ - 1.0);
+  const int x0 = std::min(static_cast<int>(gx), width_ - 2 < 0 ? 0 : width_ - 2);
+  const int y0 = std::min(static_cast<int>(gy), height_ - 2 < 0 ? 0 : height_ - 2);
+  const int x1 = std::min(x0 + 1, width_ - 1), y1 = std::min(y0 + 1, height_ - 1);
+  const double tx = gx - x0, ty = gy - y0;
+  const double d = (1 - tx) * (1 - ty) * distance_[index(x0, y0)] +
+                   tx * (1 - ty) * distance_[index(x1, y0)] +
+                   (1 - tx) * ty * distance_[index(x0, y1)] + tx * ty * distance_[index(x1, y1)];
+  return d;
+}
 
 }  // namespace wheelchair_planner

@@ -34,7 +34,8 @@ class FootprintChecker {
   /// the polygon gives -resolution. Stops early once below `stop_below` (then the value is only
   /// known to be below it), and returns a lower bound at once when the disc about base_link
   /// that encloses the body, or else every disc of a cover of the body by a few smaller discs,
-  /// is clear by at least `enough`.
+  /// is clear by at least `enough` (boundary samples that must be farther than `enough` are
+  /// skipped and count with that bound: above `enough` the value is a lower bound).
   FootprintContact clearance(const Pose2D& pose, double stop_below = -1e9,
                              double enough = 1e9) const;
 
@@ -64,6 +65,7 @@ class FootprintChecker {
   const ConfigSpace& cspace_;
   wheelchair_core::Polygon polygon_;
   std::vector<Eigen::Vector2d> boundary_;  ///< boundary samples in base_link
+  std::vector<double> boundary_s_;         ///< boundary length to each sample [m]
   std::vector<Column> columns_;
   std::vector<Disc> cover_;  ///< slabs along x about half the body's width long
   double circumscribed_radius_ = 0.0;

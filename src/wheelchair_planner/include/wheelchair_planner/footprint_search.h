@@ -45,22 +45,42 @@ struct FootprintSearchParams {
   /// One weighted A* run: heuristic weight (>= 1), the extra hard clearance of the primitives
   /// [m] (the controller's smoothing moves the path by up to ~1 cm at curvature steps; every
   /// candidate's executed sweep is verified anyway) and the primitive length [m].
+  /// `backward`: the run searches from the goal to the start and its path is driven the other
+  /// way round (a way out of a room is a way in, reversed: entering a side room through its
+  /// door is what a forward search finds quickly, leaving it backwards is not); its primitives
+  /// are costed, limited and verified as they will be driven.
+  /// `one_slice`: the run gets the first round's slice only (a lucky alignment of the lattice
+  /// with a door is found within one slice or not at all; later rounds go to the others).
   struct Attempt {
     double heuristic_weight;
     double margin;
     double step;
+    bool backward = false;
+    bool one_slice = false;
   };
   /// Tried in order, each for `attempt_expansions` (a slice); then, while the budget lasts, each
-  /// that can go on gets another slice in turn, until one finds a path. Through an
-  /// 80-85 cm door the lattice (bins, 5 degree headings, step) either lands in the few
-  /// centimetres the body has or not, and which setting does changes with a 0.01 rad change of
-  /// the start heading (flat, island -> bedroom door, 5 start headings 3.05-3.16: each setting
-  /// alone found 1-2; these eight in turn found all, 0.2-2.4 s under load). A success needs
-  /// < 2500 expansions. The least greedy first: where it succeeds its paths keep more
-  /// clearance and turn wider (Table 2 pair 9: 2.5 first ended in a 0.4 m hook, goal 9 cm off).
-  std::vector<Attempt> attempts{{1.5, 0.015, 0.15}, {2.5, 0.005, 0.15}, {2.0, 0.0, 0.15},
-                                {2.5, 0.005, 0.20}, {2.0, 0.0, 0.12},   {2.0, 0.0, 0.20},
-                                {2.5, 0.005, 0.12}, {3.0, 0.0, 0.15}};
+  /// that can go on (not `one_slice`) gets another slice in turn, until one finds a path; from
+  /// the second round on the forward and backward runs also join their trees where they meet
+  /// (same 10 cm cell, heading within a bin or two, joined by a short straight piece along the
+  /// motion). Through an 80-85 cm door the lattice (bins, 5 degree headings, step) either lands
+  /// in the few centimetres the body has or not, and which setting does changes with a 0.01 rad
+  /// change of the start heading (flat, island -> bedroom door, 5 start headings 3.05-3.16:
+  /// each setting alone found 1-2; the eight forward settings in turn found all): a success
+  /// there needs < 2500 expansions, so six of them get one slice. The least greedy first: where
+  /// it succeeds its paths keep more clearance and turn wider (Table 2 pair 9: 2.5 first ended
+  /// in a 0.4 m hook, goal 9 cm off). The last two, a greedy pair one run each way, go on:
+  /// leaving a side room of flat (the study, the bathroom, parked facing into it) takes them a
+  /// few 10^4 expansions together and was not found in 200 000 by the forward settings alone
+  /// (issue 24).
+  std::vector<Attempt> attempts{{1.5, 0.015, 0.15},
+                                {2.5, 0.005, 0.15, false, true},
+                                {2.0, 0.0, 0.15, false, true},
+                                {2.5, 0.005, 0.20, false, true},
+                                {2.0, 0.0, 0.12, false, true},
+                                {2.0, 0.0, 0.20, false, true},
+                                {2.5, 0.005, 0.12, false, true},
+                                {3.0, 0.005, 0.15},
+                                {3.0, 0.005, 0.15, true}};
   int attempt_expansions = 3000;  ///< per slice: deterministic, whatever the machine's load
   int max_candidates = 200;       ///< goal-region arrivals whose sweep is verified
 };
