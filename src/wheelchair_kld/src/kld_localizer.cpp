@@ -1,6 +1,7 @@
 #include <mrpt/math/wrap2pi.h>
 #include <wheelchair_kld/kld_bound.h>
 #include <wheelchair_kld/kld_localizer.h>
+#include <wheelchair_kld/likelihood_peak.h>
 #include <wheelchair_kld/odometry_motion_model.h>
 #include <wheelchair_kld/pose_bins.h>
 #include <wheelchair_kld/scan_validation.h>
@@ -28,6 +29,7 @@ KldLocalizer::KldLocalizer(std::shared_ptr<const LocalizationMap> map, const Kld
       fit_model_(*map_, [&] {
         MeasurementParams m = params.measurement;
         m.beam_step = params.fit_beam_step;
+        m.type = MeasurementModelType::kLikelihoodField;  // the peak search's likelihood
         return m;
       }()) {
   rng_.randomize(static_cast<uint32_t>(seed));
@@ -77,7 +79,8 @@ void KldLocalizer::initGlobal(int particles) {
     p.log_w = -std::log(static_cast<double>(n));
   }
   resetRecovery();
-  pending_refine_ = true;
+  refine_left_ = params_.refine_steps;
+  refine_done_ = 0;
   normalizeAndEstimate();
 }
 
@@ -94,7 +97,7 @@ void KldLocalizer::initGaussian(const wheelchair_core::Pose2D& mean, const Eigen
     p.log_w = -std::log(static_cast<double>(n));
   }
   resetRecovery();
-  pending_refine_ = false;
+  refine_left_ = 0;
   normalizeAndEstimate();
 }
 
@@ -125,13 +128,28 @@ UpdateResult KldLocalizer::update(const wheelchair_core::Pose2D& odom_pose,
     return UpdateResult::kNoMotion;
   measurement_.setScan(scan, sensor_pose);
   sampleStep(from, odom);
-  if (pending_refine_) refineAtFirstScan(measurement_);
-  pending_refine_ = false;
+  if (refine_left_ > 0) {
+    // A re-localization's cloud is refined over several updates (relocalize_refine_per_update
+    // passes each), so no update of a moving chair stalls the node; the first global
+    // localization (the chair waits for it) gets every pass at once.
+    const int steps =
+        recovering_ ? std::min(refine_left_, params_.relocalize_refine_per_update) : refine_left_;
+    refineAtFirstScan(measurement_, refine_done_, steps);
+    refine_left_ -= steps;
+    refine_done_ += steps;
+  }
   last_odom_ = odom;
   pending_first_update_ = false;
   normalizeAndEstimate();
   keepPlausibleHypotheses();
   fit_model_.setScan(scan, sensor_pose);
+  if (params_.peak_estimate) {
+    PeakSearch search;
+    search.max_xy = params_.peak_max_xy;
+    search.max_theta = params_.peak_max_theta;
+    const TPose2D peak = likelihoodPeakNear(fit_model_, toMrpt(estimate_.mean), search);
+    estimate_.mean = {peak.x, peak.y, peak.phi};
+  }
   fit_ = fit_model_.fitCounts(toMrpt(estimate_.mean), params_.inlier_tolerance);
   inliers_ = fit_.echoes > 0 ? static_cast<double>(fit_.inliers) / fit_.echoes : 0.0;
   const int relocalizations_before = relocalizations_;
@@ -215,9 +233,10 @@ size_t KldLocalizer::drawAncestor(const std::vector<double>& cumulative, double 
       cumulative.size() - 1);
 }
 
-void KldLocalizer::refineAtFirstScan(const MeasurementModel& model) {
-  double sxy = params_.refine_xy, sth = params_.refine_theta;
-  for (int step = 0; step < params_.refine_steps; ++step, sxy *= 0.5, sth *= 0.5) {
+void KldLocalizer::refineAtFirstScan(const MeasurementModel& model, int first, int steps) {
+  double sxy = std::ldexp(params_.refine_xy, -first),
+         sth = std::ldexp(params_.refine_theta, -first);
+  for (int step = 0; step < steps; ++step, sxy *= 0.5, sth *= 0.5) {
     std::vector<double> cumulative(particles_.size());
     double acc = 0;
     for (size_t i = 0; i < particles_.size(); ++i)

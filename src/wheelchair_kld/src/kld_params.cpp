@@ -67,7 +67,10 @@ std::string KldParams::validate() const {
       .inRange("relocalize_max_fit", relocalize_max_fit, 0.0, 1.0)
       .check(relocalize_min_echoes >= 1, "relocalize_min_echoes must be at least 1")
       .check(relocalize_updates >= 0, "relocalize_updates must not be negative (0: off)")
-      .check(relocalize_particles >= 1, "relocalize_particles must be at least 1");
+      .check(relocalize_particles >= 1, "relocalize_particles must be at least 1")
+      .check(relocalize_refine_per_update >= 1, "relocalize_refine_per_update must be at least 1")
+      .positive("peak_max_xy", peak_max_xy)
+      .positive("peak_max_theta", peak_max_theta);
   for (const std::string& nested : {motion.validate(), measurement.validate()})
     c.check(nested.empty(), nested);
   return c.result();
@@ -109,6 +112,10 @@ void readKldParams(wheelchair_core::ConfigReader& r, KldParams& p) {
   r.read("relocalize_updates", p.relocalize_updates);
   r.read("relocalize_on_mean_fit", p.relocalize_on_mean_fit);
   r.read("relocalize_particles", p.relocalize_particles);
+  r.read("relocalize_refine_per_update", p.relocalize_refine_per_update);
+  r.read("peak_estimate", p.peak_estimate);
+  r.read("peak_max_xy", p.peak_max_xy);
+  r.read("peak_max_theta", p.peak_max_theta);
 
   MotionNoise& m = p.motion;
   r.read("odom_alpha1", m.alpha1);

@@ -106,6 +106,18 @@ MeasurementModel::FitCounts MeasurementModel::fitCounts(const mrpt::math::TPose2
   return f;
 }
 
+std::vector<double> MeasurementModel::endpointDistances(const mrpt::math::TPose2D& pose) const {
+  const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+  std::vector<double> d;
+  for (const Beam& b : beams_) {
+    if (b.max_range) continue;
+    const int cell =
+        map_.cellIndex(pose.x + c * b.end_x - s * b.end_y, pose.y + s * b.end_x + c * b.end_y);
+    if (cell >= 0) d.push_back(map_.obstacleDistance()[cell]);
+  }
+  return d;
+}
+
 double MeasurementModel::logBeamModel(const mrpt::math::TPose2D& pose) const {
   const double c = std::cos(pose.phi), s = std::sin(pose.phi);
   const double ox = pose.x + c * sensor_pose_.x - s * sensor_pose_.y;

@@ -7,6 +7,7 @@
 #include <wheelchair_core/config.h>
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_kld/kld_localizer.h>
+#include <wheelchair_kld/reference_fit.h>
 #include <wheelchair_logs/bag_scans.h>
 #include <wheelchair_logs/carmen_log.h>
 #include <wheelchair_logs/progress_bar.h>
@@ -42,6 +43,8 @@ const char* kUsage =
     "  [--config PARAMS.yaml] [--odometry fields|gfs] [--laser-x M] [--seed N] [--quiet]\n"
     "  [--kidnap-at K --kidnap-from J]: after the K-th scan the drive continues with the J-th\n"
     "  and later scans, the odometry unaware (a kidnapping spliced into a real log)\n"
+    "  [--reference-fit]: no filter; how well the reference poses fit the map (inlier share,\n"
+    "  endpoint distances, the likelihood field's peak near each reference: the floor)\n"
     "  bag input: [--scan-topic /scan] [--odom-frame odom] [--base-frame base_link]\n"
     "             [--odom-topic /odom]\n"
     "The initial pose is --initial, else the first reference pose (10 cm / 3 deg prior), else\n"
@@ -54,7 +57,7 @@ struct Args {
   double offset = 0, tolerance = 0.01, relations_offset = 0, relations_tolerance = 0.01;
   double laser_x = 0;
   long kidnap_at = -1, kidnap_from = -1;
-  bool global = false, json = false, quiet = false;
+  bool global = false, json = false, quiet = false, reference_fit = false;
   uint64_t seed = 1;
 };
 
@@ -111,6 +114,8 @@ bool parse(int argc, char** argv, Args& a) {
       a.kidnap_at = std::stol(value());
     else if (k == "--kidnap-from")
       a.kidnap_from = std::stol(value());
+    else if (k == "--reference-fit")
+      a.reference_fit = true;
     else if (k == "--json")
       a.json = true;
     else if (k == "--quiet")
@@ -162,6 +167,30 @@ Pose2D sensorPose(const LogScan& s, bool bag, const Args& a) {
   return bag ? wheelchair_core::between(s.odom_pose, s.laser_pose) : Pose2D{a.laser_x, 0, 0};
 }
 
+void printReferenceFit(const wheelchair_kld::ReferenceFitSummary& s, bool json) {
+  const double deg = 180.0 / M_PI;
+  if (json) {
+    std::printf(
+        "{\"references\": %zu, \"inlier_share_mean\": %.4f, \"known_fit_mean\": %.4f, "
+        "\"distance_p50_m\": %.4f, \"distance_p90_m\": %.4f, \"distance_p95_m\": %.4f, "
+        "\"peak_xy_rms_m\": %.4f, \"peak_theta_rms_deg\": %.3f, \"peak_x_mean_m\": %.4f, "
+        "\"peak_y_mean_m\": %.4f, \"peak_theta_mean_deg\": %.3f}\n",
+        s.scans, s.inlier_share_mean, s.known_fit_mean, s.distance_p50, s.distance_p90,
+        s.distance_p95, s.peak_xy_rms, s.peak_theta_rms * deg, s.peak_x_mean, s.peak_y_mean,
+        s.peak_theta_mean * deg);
+    return;
+  }
+  std::printf("reference poses (%zu) on this map: inlier share %.3f, known-space fit %.3f\n",
+              s.scans, s.inlier_share_mean, s.known_fit_mean);
+  std::printf(
+      "echo endpoints' distance to the nearest obstacle: median %.3f m, p90 %.3f, p95 %.3f\n",
+      s.distance_p50, s.distance_p90, s.distance_p95);
+  std::printf(
+      "likelihood peak near each reference: RMS offset %.4f m, %.3f deg; mean offset (laser "
+      "frame) x %.4f m, y %.4f m, heading %.3f deg\n",
+      s.peak_xy_rms, s.peak_theta_rms * deg, s.peak_x_mean, s.peak_y_mean, s.peak_theta_mean * deg);
+}
+
 template <typename Reader>
 int replay(Reader& reader, const Args& a, bool bag) {
   const auto map_file = wheelchair_core::loadMap(a.map);
@@ -192,6 +221,37 @@ int replay(Reader& reader, const Args& a, bool bag) {
   }
   if (a.kidnap_at >= 0)
     scans = wheelchair_logs::spliceKidnapping(scans, a.kidnap_at, a.kidnap_from);
+  if (a.reference_fit) {
+    if (!reference) throw std::invalid_argument("--reference-fit needs --reference");
+    std::vector<wheelchair_kld::ReferenceFit> fits;
+    std::ofstream out;
+    if (!a.out.empty()) {
+      out.open(a.out);
+      if (!out) throw std::runtime_error(a.out + ": cannot write");
+      out << "stamp,ref_x,ref_y,ref_yaw,echoes,inliers,contradictions,peak_dx,peak_dy,peak_dyaw\n";
+      out.precision(10);
+    }
+    for (size_t i = 0; i < scans.size(); ++i) {
+      const Pose2D sensor = sensorPose(scans[i], bag, a);
+      const LogScan* ref = reference->match(scans[i], how, a.offset, a.tolerance);
+      if (ref) {
+        fits.push_back(wheelchair_kld::referenceFit(
+            *map, params.measurement, scans[i].scan, sensor,
+            wheelchair_core::compose(ref->laser_pose, wheelchair_core::inverse(sensor)),
+            params.inlier_tolerance));
+        const auto& f = fits.back();
+        if (out.is_open())
+          out << scans[i].scan.stamp << "," << ref->laser_pose.x << "," << ref->laser_pose.y << ","
+              << ref->laser_pose.yaw << "," << f.fit.echoes << "," << f.fit.inliers << ","
+              << f.fit.contradictions << "," << f.peak_offset.x << "," << f.peak_offset.y << ","
+              << f.peak_offset.yaw << "\n";
+      }
+      bar.update(double(i + 1) / scans.size(), std::to_string(fits.size()) + " references");
+    }
+    bar.breakLine();
+    printReferenceFit(wheelchair_kld::summarizeReferenceFits(fits), a.json);
+    return 0;
+  }
   size_t kidnap_record = 0;
   for (size_t i = 0; i < scans.size(); ++i) {
     const LogScan& s = scans[i];

@@ -110,7 +110,9 @@ const std::string kIntelRaw = kData + "/intel/derived_intel_gt_rawodom.clf";
 const std::string kIntelCorrected = kData + "/intel/intel-corrected.log.gz";
 
 // Issue 21: on build_map's Intel map the mean-fit rule (window 10 below 0.85) threw the correct
-// track away 5 times (1.28 m RMS); the contradiction rule keeps it (10.8 cm).
+// track away 5 times (1.28 m RMS); the contradiction rule keeps it, and the likelihood's peak as
+// the estimate with the untempered likelihood brings it from 10.8 cm / 1.80 deg to 4.7 cm /
+// 0.76 deg.
 TEST(RealLogs, IntelTrackIsNeverThrownAwayOnTheBuildMapMap) {
   if (!haveData({kIntelRaw, kIntelCorrected}))
     GTEST_SKIP() << "no real logs at " << kData << " (../shared/data beside the repository)";
@@ -123,11 +125,15 @@ TEST(RealLogs, IntelTrackIsNeverThrownAwayOnTheBuildMapMap) {
             << r.heading_rms * 180 / M_PI << " deg RMS over " << r.matched << "\n";
   EXPECT_EQ(r.relocalizations, 0);
   EXPECT_EQ(r.matched, scans.size());
-  EXPECT_LT(r.position_rms, 0.15);
-  EXPECT_LT(r.heading_rms, 2.5 * M_PI / 180);
+  EXPECT_LT(r.position_rms, 0.05);  // issue 21's target: 5 cm, 1 deg
+  EXPECT_LT(r.heading_rms, 1.0 * M_PI / 180);
 
+  // The filter before issue 21: the mean-fit rule on the posterior mean of the tempered
+  // likelihood (exponent 0.1), whose fit sat low because the mean was 10 cm off.
   KldParams old_rule = params;
   old_rule.relocalize_on_mean_fit = true;
+  old_rule.peak_estimate = false;
+  old_rule.measurement.likelihood_exponent = 0.1;
   EXPECT_GT(replay(scans, raw, map, old_rule).relocalizations, 0) << "the old rule's failure";
 }
 
@@ -151,9 +157,11 @@ TEST(RealLogs, AKidnappingSplicedIntoIntelIsNoticedWithinTwoUpdates) {
   }
 }
 
-// FR101's raw log on the map of its 292 corrected scans. One re-localization is right: at
-// 1351-1358 s the odometry turns while the scans say otherwise, the tracked pose leaves 86 of
-// 354 echoes near an obstacle (132 in known-free space) and the re-localized pose explains 333.
+// FR101's raw log on the map of its 292 corrected scans. The re-localizations are right: at
+// 1351-1358 s (scans 4362-4393) the odometry turns while the scans say otherwise, the tracked
+// pose leaves 86 of 354 echoes near an obstacle (132 in known-free space) and the re-localized
+// pose explains 333. With the untempered likelihood the filter re-localizes twice in that episode
+// (scans 4386 and 4393), never elsewhere.
 TEST(RealLogs, Fr101RawLogTracksItsCorrectedPoses) {
   const std::string raw = kData + "/fr101/fr101.carmen.log.gz";
   const std::string corrected = kData + "/fr101/fr101.carmen.gfs.log.gz";
@@ -164,10 +172,10 @@ TEST(RealLogs, Fr101RawLogTracksItsCorrectedPoses) {
   const Replay r = replay(readLog(raw), corrected, map, params);
   std::cout << "FR101: " << r.relocalizations << " re-localizations, " << r.position_rms << " m, "
             << r.heading_rms * 180 / M_PI << " deg RMS over " << r.matched << "\n";
-  EXPECT_LE(r.relocalizations, 1);
+  EXPECT_LE(r.relocalizations, 2);
   EXPECT_EQ(r.matched, 292u);
-  EXPECT_LT(r.position_rms, 0.06);
-  EXPECT_LT(r.heading_rms, 1.0 * M_PI / 180);
+  EXPECT_LT(r.position_rms, 0.05);
+  EXPECT_LT(r.heading_rms, 0.6 * M_PI / 180);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Distance transform against brute force; both measurement models prefer the true pose.
 #include <gtest/gtest.h>
+#include <wheelchair_kld/likelihood_peak.h>
 #include <wheelchair_kld/measurement_model.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 
@@ -77,6 +78,31 @@ TEST_P(MeasurementModelTest, TruePoseIsMoreLikelyThanOffsetPoses) {
   for (const TPose2D off : {TPose2D(5.15, 11.0, 0.2), TPose2D(5.0, 10.85, 0.2),
                             TPose2D(5.0, 11.0, 0.25), TPose2D(9.0, 11.0, 0.2)})
     EXPECT_GT(at_truth, model.logLikelihood(off)) << off.asString();
+}
+
+// The published estimate's last step: from 12 cm / 2 deg off, the search ends at the true pose
+// (within a cell), and never leaves its bounds.
+TEST(LikelihoodPeak, SearchFromAnOffsetPoseEndsAtTheTruePoseWithinItsBounds) {
+  const auto grid = loadWorldGrid(WORLDS_DIR "/office.yaml");
+  const LocalizationMap map(grid, 2.0);
+  MeasurementParams p;
+  p.beam_step = 1;
+  MeasurementModel model(map, p);
+  const TPose2D truth(5.0, 11.0, 0.2);
+  const DriveParams drive;
+  model.setScan(test::simulateScan(grid, {truth.x, truth.y, truth.phi}, drive, 11),
+                drive.sensor_pose);
+  const TPose2D start(5.08, 10.91, 0.235);
+  const TPose2D peak = likelihoodPeakNear(model, start, PeakSearch());
+  EXPECT_LT(std::hypot(peak.x - truth.x, peak.y - truth.y), 0.03) << peak.asString();
+  EXPECT_LT(std::abs(peak.phi - truth.phi), 0.01) << peak.asString();
+  PeakSearch tight;
+  tight.max_xy = 0.05;
+  tight.max_theta = 0.01;
+  const TPose2D bounded = likelihoodPeakNear(model, start, tight);
+  EXPECT_LE(std::hypot(bounded.x - start.x, bounded.y - start.y), 0.05 + 1e-9);
+  EXPECT_LE(std::abs(bounded.phi - start.phi), 0.01 + 1e-9);
+  EXPECT_GT(model.logLikelihood(bounded), model.logLikelihood(start));
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, MeasurementModelTest,

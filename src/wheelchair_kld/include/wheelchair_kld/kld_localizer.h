@@ -71,8 +71,9 @@ class KldLocalizer {
   /// The sampling loop of Algorithm 1: draws, predicts, weighs until M >= max(M_x, M_min)
   /// (bounded by M_max), or exactly fixed_particles in fixed-size mode.
   void sampleStep(const mrpt::math::TPose2D& odom_from, const mrpt::math::TPose2D& odom_to);
-  /// Re-applies the current scan with kernel-jittered redraws (refine_steps, after initGlobal).
-  void refineAtFirstScan(const MeasurementModel& model);
+  /// Re-applies the current scan with kernel-jittered redraws: `steps` passes from pass `first`
+  /// of refine_steps (the kernel halves at every pass), after initGlobal.
+  void refineAtFirstScan(const MeasurementModel& model, int first, int steps);
   /// Index of the particle whose cumulative weight interval holds `r` in [0, total).
   size_t drawAncestor(const std::vector<double>& cumulative, double r) const;
   /// Raises the weights to the power that keeps min_effective_fraction of them effective.
@@ -94,7 +95,8 @@ class KldLocalizer {
   PoseEstimate estimate_;
   std::optional<mrpt::math::TPose2D> last_odom_;
   bool pending_first_update_ = false;
-  bool pending_refine_ = false;  ///< the next update is the first after initGlobal
+  int refine_left_ = 0;  ///< refinement passes still due after initGlobal
+  int refine_done_ = 0;  ///< ... and done so far
   int expected_beams_ = 0;
   double w_slow_ = 0, w_fast_ = 0;
   double inliers_ = 0;  ///< inlier fraction of the last scan at the estimate

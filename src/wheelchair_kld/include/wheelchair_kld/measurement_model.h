@@ -42,6 +42,9 @@ class MeasurementModel {
     }
   };
   FitCounts fitCounts(const mrpt::math::TPose2D& pose, double tolerance) const;
+  /// Distance of each echo's endpoint to the nearest obstacle surface for this pose [m] (capped
+  /// at the map's max_distance; endpoints off the map left out).
+  std::vector<double> endpointDistances(const mrpt::math::TPose2D& pose) const;
 
  private:
   struct Beam {
