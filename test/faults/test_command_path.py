@@ -20,6 +20,10 @@ the demo brings them up), one case per rostest (~case):
   by `rostopic pub __name:=...`) is heard.
 - foreign_speed_limit: mid-drive another node publishes /safety/speed_limit (a crawl, then a
   raise to 10 m/s) at 100 Hz: refused and reported, the chair drives at its own limits.
+- switch_off / computer_power_lost (ISO 7176-14, switch-off while driving): SIGTERM of the chair
+  process mid-drive (the orderly switch-off: the driver's last act is the brake), or SIGKILL
+  (the chair's computer loses power: the motor controller's 100 ms watchdog brakes): at rest
+  within the brake's distance, no motion after, no contact.
 - Single faults after ISO 7176-14 (sim/motor_fault on the emulated motor controller):
   power_removed (the motor side loses supply), frozen_encoder (one wheel's encoder stops
   counting), output_fault (the output stage reports overcurrent), command_signal_lost (the
@@ -394,6 +398,34 @@ class CommandPath(unittest.TestCase):
         self.assertEqual(s.first_stop(since)[1].reason, SafetyStatus.DRIVER_FAULT, stops)
         self.figures.update({"speed_mps": round(v0, 2), "at_rest_s": round(rest - t0, 2),
                              "stops": len(stops)})
+
+    # ---- switch-off while driving (ISO 7176-14) ----------------------------------------------
+    def switch_off(self, sig, what):
+        s = self.s
+        s.start_driving(self, START, GOAL, 1.0)
+        pid = pid_of("/wheelchair")
+        v0, t0 = speed(s), rospy.get_time()
+        os.kill(pid, sig)
+        self.assertTrue(s.wait(s.at_rest, 30.0), f"{what}: still moving: " + s.describe())
+        rest = rospy.get_time()
+        travelled = s.travelled(t0)
+        s.sim_sleep(3.0)
+        self.assertLess(s.travelled(rest), 0.03, f"{what}: moved again: " + s.describe())
+        self.assertFalse(s.collided)
+        # The motor controller's brake (>= 2 m/s^2; measured 4) after at most its 0.1 s
+        # watchdog, + 3 cm.
+        self.assertLess(travelled, 0.1 * v0 + v0 * v0 / 4.0 + 0.03, f"{what}: too far")
+        self.figures.update({"speed_mps": round(v0, 2), "at_rest_s": round(rest - t0, 2),
+                             "travelled_m": round(travelled, 3),
+                             "stop_told": "(the chair process is off: the motors brake)"})
+        rospy.loginfo("%s at %.2f m/s: at rest after %.2f s, %.3f m", what, v0, rest - t0,
+                      travelled)
+
+    def case_switch_off(self):
+        self.switch_off(signal.SIGTERM, "switch-off")
+
+    def case_computer_power_lost(self):
+        self.switch_off(signal.SIGKILL, "computer power lost")
 
     # ---- item 7: single faults after ISO 7176-14 --------------------------------------------
     def motor_fault(self, fault, what):
