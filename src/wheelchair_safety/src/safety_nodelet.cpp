@@ -7,6 +7,7 @@
 // rider's release (wheelchair_ros::releaseStopByRider, called by the HMI), never by a topic.
 // Publishes the latched stop flag and the typed status (wheelchair_msgs/SafetyStatus), outputs
 // only, whenever the verdict changes.
+#include <wheelchair_description/chair_file.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/drive_channel.h>
@@ -28,6 +29,7 @@
 #include <tf2_ros/buffer.h>
 #include <pluginlib/class_list_macros.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -44,6 +46,9 @@ struct SafetyNodeletConfig {
   /// [Hz] checks per second (and at once on a new goal), each with a permit to the driver: the
   /// command rate (the driver's permit_timeout is 100 ms).
   double rate = 50.0;
+  /// The chair (wheelchair_description's chair.yaml, found at run time; "" = that one): the
+  /// field's stop and its front, the corridor's width and the rear overhang come from it.
+  std::string chair_file;
   std::string map_frame = "map";
   std::string base_frame = "base_link";
 
@@ -66,8 +71,30 @@ void readSafetyNodeletConfig(wheelchair_core::ConfigReader& reader, SafetyNodele
   readProtectiveField(reader, config.field);
   wheelchair_core::readMapLimits(reader, config.map_limits);
   reader.read("rate", config.rate);
+  reader.read("chair_file", config.chair_file);
   reader.read("map_frame", config.map_frame);
   reader.read("base_frame", config.base_frame);
+}
+
+/// The defaults that are the chair's (its file, one place): the protective field's stop
+/// (protective_field/...) and front (the footprint's), the corridor (half the width + 10 cm),
+/// the rear overhang (the footprint's). A private parameter still overrides each (tests).
+SafetyNodeletConfig chairDefaults(const wheelchair_description::ChairParams& chair) {
+  SafetyNodeletConfig config;
+  double front = 0.0, rear = 0.0;
+  for (const Eigen::Vector2d& corner : chair.footprint) {
+    front = std::max(front, corner.x());
+    rear = std::max(rear, -corner.x());
+  }
+  config.field.reaction_time = chair.stop.reaction_time;
+  config.field.brake_decel = chair.stop.brake_decel;
+  config.field.brake_jerk = chair.stop.brake_jerk;
+  config.field.drive_accel = chair.stop.drive_accel;
+  config.field.margin = chair.stop.margin;
+  config.field.front_offset = front;
+  config.limits.corridor_half_width = 0.5 * chair.width + 0.10;
+  config.limits.rear_overhang = rear;
+  return config;
 }
 
 class SafetyNodelet : public nodelet::Nodelet {
@@ -89,8 +116,16 @@ class SafetyNodelet : public nodelet::Nodelet {
     } catch (const std::logic_error& e) {
       throw wheelchair_core::ConfigError(getName() + ": " + e.what());
     }
+    ros::NodeHandle& pnh = getPrivateNodeHandle();
     const auto config = wheelchair_ros::loadParameters<SafetyNodeletConfig>(
-        getPrivateNodeHandle(), readSafetyNodeletConfig);
+        pnh, readSafetyNodeletConfig, chairDefaults(wheelchair_description::loadChairOf(pnh)));
+    // The field in effect, for the log and for tests that place a person at its edge.
+    pnh.setParam("field/reaction_time", config.field.reaction_time);
+    pnh.setParam("field/brake_decel", config.field.brake_decel);
+    pnh.setParam("field/brake_jerk", config.field.brake_jerk);
+    pnh.setParam("field/drive_accel", config.field.drive_accel);
+    pnh.setParam("field/margin", config.field.margin);
+    pnh.setParam("field/front_offset", config.field.front_offset);
     map_frame_ = config.map_frame;
     base_frame_ = config.base_frame;
     map_limits_ = config.map_limits;
