@@ -48,8 +48,8 @@ WheelVerdict WheelMotionCheck::checkWheel(const char* name, Wheel& w, const Whee
   const double pushed = std::abs(s.torque) >= config_.stall_torque;
   if (!pushed) w.pushed_since = NAN;
   if (pushed && !std::isfinite(w.pushed_since)) w.pushed_since = now;
-  const bool against = pushed && opposite(s.rate, s.torque) &&
-                       std::abs(s.rate) > config_.encoder_check_rate;
+  const bool against =
+      pushed && opposite(s.rate, s.torque) && std::abs(s.rate) > config_.encoder_check_rate;
   if (!against) w.against_since = NAN;
   if (against && !std::isfinite(w.against_since)) {
     w.against_since = now;
@@ -67,8 +67,7 @@ WheelVerdict WheelMotionCheck::checkWheel(const char* name, Wheel& w, const Whee
   if (pushed && now - std::max(w.pushed_since, w.counted_at) >= config_.stall_time)
     return {WheelFault::kStalled, format("%s wheel did not turn for %.2f s under %.1f N m", name,
                                          now - std::max(w.pushed_since, w.counted_at), s.torque)};
-  if (against && now - w.against_since >= config_.stall_time &&
-      std::abs(s.rate) > w.against_rate)
+  if (against && now - w.against_since >= config_.stall_time && std::abs(s.rate) > w.against_rate)
     return {WheelFault::kAgainstCommand,
             format("%s wheel sped up to %.2f rad/s against %.1f N m", name, s.rate, s.torque)};
   return {};

@@ -285,7 +285,8 @@ TEST_F(CommandPathTest, AFrozenEncoderEndsTheDriveWithinTheCheckAngle) {
   });
   ASSERT_GT(latched_at, 0);
   const auto& c = h.driver.config();
-  EXPECT_LE(right_turned, c.encoder_check_angle + 0.02 * rate) << "latched after " << latched_at - t0;
+  EXPECT_LE(right_turned, c.encoder_check_angle + 0.02 * rate)
+      << "latched after " << latched_at - t0;
   EXPECT_LT(latched_at - t0, c.encoder_check_time);  // the angle comes first at this speed
   EXPECT_EQ(h.driver.latchCause(), LatchCause::kEncoderFault);
   EXPECT_EQ(h.driver.sentence(), "a wheel sensor failed");

@@ -23,7 +23,7 @@ struct Outcome {
   double at = -1.0;
 };
 Outcome run(WheelMotionCheck& check, double duration,
-        const std::function<std::pair<WheelState, WheelState>(double)>& wheels) {
+            const std::function<std::pair<WheelState, WheelState>(double)>& wheels) {
   check.reset(0.0, wheels(0.0).first.angle, wheels(0.0).second.angle);
   for (int i = 1; i <= static_cast<int>(duration * 100); ++i) {
     const double t = i * 0.01;

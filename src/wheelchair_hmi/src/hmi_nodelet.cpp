@@ -108,10 +108,10 @@ class HmiNodelet : public nodelet::Nodelet {
     announce_pub_ = nh.advertise<std_msgs::String>("hmi/announce", 10, true);
     state_pub_ = std::make_unique<HmiStatePublisher>(nh);
     marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("hmi/markers", 1, true);
-    switch_guard_ = std::make_unique<wheelchair_ros::ExpectedPublisher>(
-        nh.resolveName("switch"), config.switch_publisher);
-    go_to_guard_ = std::make_unique<wheelchair_ros::ExpectedPublisher>(
-        nh.resolveName("hmi/go_to"), config.go_to_publisher);
+    switch_guard_ = std::make_unique<wheelchair_ros::ExpectedPublisher>(nh.resolveName("switch"),
+                                                                        config.switch_publisher);
+    go_to_guard_ = std::make_unique<wheelchair_ros::ExpectedPublisher>(nh.resolveName("hmi/go_to"),
+                                                                       config.go_to_publisher);
     switch_sub_ = nh.subscribe("switch", 10, &HmiNodelet::onSwitch, this);
     go_to_sub_ = nh.subscribe("hmi/go_to", 1, &HmiNodelet::onGoTo, this);
     finished_sub_ = nh.subscribe("hmi/finished", 1, &HmiNodelet::onFinished, this);

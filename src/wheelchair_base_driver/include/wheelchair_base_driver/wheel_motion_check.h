@@ -47,12 +47,12 @@ class WheelMotionCheck {
 
  private:
   struct Wheel {
-    double angle = NAN;            ///< at its last count
-    double counted_at = NAN;       ///< [s] its last count
-    double other_at_count = NAN;   ///< the other wheel's angle at its last count
-    double pushed_since = NAN;     ///< [s] |torque| >= stall_torque since
-    double against_since = NAN;    ///< [s] turning against |torque| >= stall_torque since
-    double against_rate = 0.0;     ///< |rate| then
+    double angle = NAN;           ///< at its last count
+    double counted_at = NAN;      ///< [s] its last count
+    double other_at_count = NAN;  ///< the other wheel's angle at its last count
+    double pushed_since = NAN;    ///< [s] |torque| >= stall_torque since
+    double against_since = NAN;   ///< [s] turning against |torque| >= stall_torque since
+    double against_rate = 0.0;    ///< |rate| then
   };
   WheelVerdict checkWheel(const char* name, Wheel& wheel, const WheelState& state,
                           const WheelState& other, double now, bool counting);
