@@ -106,7 +106,8 @@ def start_chair(demo):
     world = ROOT / "test" / "worlds" / f"{demo.args.world}"
     stack.chair(demo.processes, ports=CAN_PORTS, overrides={
         "map_server/map_file": f"{world}.yaml", "hmi/places_file": f"{world}.places.yaml",
-        "hmi/scan_interval": demo.args.scan_interval})
+        "hmi/scan_interval": demo.args.scan_interval,
+        "hmi/switch_publisher": "/wheelchair_demo"})  # the demo's rider presses the switch
     received = []
     subscriber = rospy.Subscriber("/map", OccupancyGrid, received.append, queue_size=1)
     grid = demo.wait_for("a map on /map", lambda: received[-1] if received else None, ["wheelchair"])

@@ -14,6 +14,16 @@ the demo brings them up), one case per rostest (~case):
   new command, and the rider is told why the drive ended.
 - corrupt_frames: 1 s of random torque-command frames on the motor bus mid-drive (17
   brake/release cycles, a jolt): one controlled stop, latched, told.
+- foreign_switch / foreign_go_to: after a latched stop another node presses /switch through a
+  whole choice, or names a place on /hmi/go_to (a choice releases the stop and drives): refused
+  and reported, nothing moves; the one expected publisher (/switch_keyboard, /display: played
+  by `rostopic pub __name:=...`) is heard.
+- foreign_speed_limit: mid-drive another node publishes /safety/speed_limit (a crawl, then a
+  raise to 10 m/s) at 100 Hz: refused and reported, the chair drives at its own limits.
+- switch_off / computer_power_lost (ISO 7176-14, switch-off while driving): SIGTERM of the chair
+  process mid-drive (the orderly switch-off: the driver's last act is the brake), or SIGKILL
+  (the chair's computer loses power: the motor controller's 100 ms watchdog brakes): at rest
+  within the brake's distance, no motion after, no contact.
 - Single faults after ISO 7176-14 (sim/motor_fault on the emulated motor controller):
   power_removed (the motor side loses supply), frozen_encoder (one wheel's encoder stops
   counting), output_fault (the output stage reports overcurrent), command_signal_lost (the
@@ -22,6 +32,7 @@ Each case writes its figures (JSON) to ~result_file if set (bench/faults).
 """
 import json
 import os
+import subprocess
 import random
 import socket
 import struct
@@ -36,8 +47,9 @@ import rospy
 import rostest
 from nav_msgs.msg import Path
 from nodelet.srv import NodeletUnload
-from std_msgs.msg import Bool
-from wheelchair_msgs.msg import SafetyStatus, WheelTorques
+from rosgraph_msgs.msg import Log
+from std_msgs.msg import Bool, Empty, Float64, String
+from wheelchair_msgs.msg import HmiState, SafetyStatus, WheelTorques
 from wheelchair_sim.srv import EnableLaser, MotorFault
 
 from wheelchair_test.harness import Rider, describe_stop
@@ -78,9 +90,40 @@ def speed(s):
     return 0.0 if s.truth is None else abs(s.truth[4])
 
 
+def publish_as(node, topic, kind, value):
+    """One message on `topic` from a separate process named `node` (rostopic pub)."""
+    subprocess.run(["rostopic", "pub", "-1", topic, kind, value, f"__name:={node}"], check=True,
+                   capture_output=True, timeout=60)
+
+
 class CommandPath(unittest.TestCase):
     def setUp(self):
         self.s = Rider("test_command_path")
+        self.errors = []  # (wall time, text) of every error in the log of any node
+        self.hmi_states = []
+        rospy.Subscriber("/rosout", Log, self._on_log, queue_size=100)  # every node's log
+        rospy.Subscriber("/hmi/state", HmiState, self.hmi_states.append, queue_size=100)
+
+    def _on_log(self, msg):
+        if msg.level >= Log.ERROR:
+            self.errors.append((time.time(), msg.msg))
+
+    def reported(self, *words):
+        """An error in the log with all `words` (the refusal names the topic and the sender)."""
+        return any(all(w in text for w in words) for _, text in self.errors)
+
+    def latched_stop_at_rest(self):
+        """Drives, then a laser dropout: the supervisor's stop latches; the laser is back."""
+        s = self.s
+        s.start_driving(self, START, GOAL, 1.0)
+        laser = rospy.ServiceProxy("/sim/enable_laser", EnableLaser)
+        since = s.mark()
+        self.assertTrue(laser(False).success)
+        self.assertTrue(s.wait(lambda: s.first_stop(since), 30.0), "no stop: " + s.describe(since))
+        self.assertTrue(s.wait(s.at_rest, 30.0), "still moving: " + s.describe(since))
+        self.assertTrue(laser(True).success)
+        s.sim_sleep(1.0)
+        return since
 
     def ready(self):
         s = self.s
@@ -193,6 +236,88 @@ class CommandPath(unittest.TestCase):
         rospy.loginfo("foreign release: %.3f m after the foreign release, %.2f m after the rider's",
                       foreign_travel, s.travelled(go))
 
+    # ---- the rider's inputs and the supervisor's limit: their one publisher only ------------
+    def case_foreign_switch(self):
+        s = self.s
+        since = self.latched_stop_at_rest()
+        me = rospy.get_name()
+        foreign = rospy.get_time()
+        # Presses through a whole choice (room, place, confirm at the 2 s scan): unguarded, they
+        # choose a destination, which releases the stop and drives.
+        for _ in range(6):
+            s.press()
+            s.sim_sleep(1.3)
+        s.sim_sleep(3.0)
+        travel = s.travelled(foreign)
+        self.assertLess(travel, 0.03, "another node's presses drove the chair: " + s.describe(since))
+        last = s.received("safety", since)[-1][1]
+        self.assertTrue(last.stop, "the stop was lifted: " + describe_stop(last))
+        self.assertTrue(s.wait(lambda: self.reported("/switch", me, "refused"), 10.0),
+                        "the foreign presses were not reported: %s" % self.errors[-5:])
+        self.assertFalse(any(m.state != HmiState.SCANNING_ROOMS for m in self.hmi_states[-5:]),
+                         "the HMI took a foreign press")
+        # The rider's own switch is heard: a press chooses the highlighted room.
+        n = len(self.hmi_states)
+        publish_as("switch_keyboard", "/switch", "std_msgs/Empty", "{}")
+        self.assertTrue(s.wait(lambda: any(m.state == HmiState.SCANNING_PLACES
+                                           for m in self.hmi_states[n:]), 10.0),
+                        "the rider's switch was not heard")
+        self.figures.update({"travelled_m": round(travel, 3), "stop_told": describe_stop(last),
+                             "sentence": last.sentence})
+
+    def case_foreign_go_to(self):
+        s = self.s
+        since = self.latched_stop_at_rest()
+        me = rospy.get_name()
+        pub = rospy.Publisher("/hmi/go_to", String, queue_size=1)
+        time.sleep(1.0)  # connections
+        foreign = rospy.get_time()
+        pub.publish(String(GOAL))
+        s.sim_sleep(4.0)
+        travel = s.travelled(foreign)
+        self.assertLess(travel, 0.03, "another node's choice drove the chair: " + s.describe(since))
+        last = s.received("safety", since)[-1][1]
+        self.assertTrue(last.stop, "the stop was lifted: " + describe_stop(last))
+        self.assertTrue(s.wait(lambda: self.reported("/hmi/go_to", me, "refused"), 10.0),
+                        "the foreign choice was not reported: %s" % self.errors[-5:])
+        # Its one publisher (the rider's display) is heard: the chair drives again.
+        go = s.mark()
+        publish_as("display", "/hmi/go_to", "std_msgs/String", GOAL)
+        self.assertTrue(s.wait(lambda: s.travelled(go) > 0.3, 60.0),
+                        "the display's choice did not drive: " + s.describe(go))
+        self.figures.update({"travelled_m": round(travel, 3), "stop_told": describe_stop(last),
+                             "sentence": last.sentence})
+
+    def case_foreign_speed_limit(self):
+        s = self.s
+        s.start_driving(self, START, GOAL, 1.0)
+        me = rospy.get_name()
+        pub = rospy.Publisher("/safety/speed_limit", Float64, queue_size=10, tcp_nodelay=True)
+        time.sleep(1.0)  # connections
+        since = s.mark()
+        t0 = rospy.get_time()
+        v0 = speed(s)
+        slowest = fastest = v0
+        for limit in (0.05, 10.0):  # a crawl (unguarded: 0.05 m/s), then a raise
+            end = time.time() + 3.0
+            while time.time() < end:  # 100 Hz of wall time
+                pub.publish(Float64(limit))
+                v = speed(s)
+                slowest, fastest = min(slowest, v), max(fastest, v)
+                time.sleep(0.01)
+        self.assertFalse(s.first_stop(since), "stopped: " + s.describe(since))
+        # Taken, the crawl would slow the chair to 0.05 m/s within 1 s (its 0.5 m/s^2 stop);
+        # the turn into the kitchen alone slows it to about 0.28.
+        self.assertGreater(slowest, 0.15, "another node's limit slowed the chair: " +
+                           s.describe(since))
+        # The controller's own comfort limit (0.8 m/s) holds: the raise changed nothing.
+        self.assertLess(fastest, 0.85, "another node's limit sped the chair up")
+        self.assertTrue(s.wait(lambda: self.reported("/safety/speed_limit", me, "refused"), 10.0),
+                        "the foreign limit was not reported: %s" % self.errors[-5:])
+        self.figures.update({"speed_mps": round(v0, 2), "slowest_mps": round(slowest, 2),
+                             "fastest_mps": round(fastest, 2),
+                             "travelled_m": round(s.travelled(t0), 3)})
+
     # ---- item 2: unloading the supervisor stops the chair -----------------------------------
     def case_supervisor_unloaded(self):
         s = self.s
@@ -274,6 +399,34 @@ class CommandPath(unittest.TestCase):
         self.figures.update({"speed_mps": round(v0, 2), "at_rest_s": round(rest - t0, 2),
                              "stops": len(stops)})
 
+    # ---- switch-off while driving (ISO 7176-14) ----------------------------------------------
+    def switch_off(self, sig, what):
+        s = self.s
+        s.start_driving(self, START, GOAL, 1.0)
+        pid = pid_of("/wheelchair")
+        v0, t0 = speed(s), rospy.get_time()
+        os.kill(pid, sig)
+        self.assertTrue(s.wait(s.at_rest, 30.0), f"{what}: still moving: " + s.describe())
+        rest = rospy.get_time()
+        travelled = s.travelled(t0)
+        s.sim_sleep(3.0)
+        self.assertLess(s.travelled(rest), 0.03, f"{what}: moved again: " + s.describe())
+        self.assertFalse(s.collided)
+        # The motor controller's brake (>= 2 m/s^2; measured 4) after at most its 0.1 s
+        # watchdog, + 3 cm.
+        self.assertLess(travelled, 0.1 * v0 + v0 * v0 / 4.0 + 0.03, f"{what}: too far")
+        self.figures.update({"speed_mps": round(v0, 2), "at_rest_s": round(rest - t0, 2),
+                             "travelled_m": round(travelled, 3),
+                             "stop_told": "(the chair process is off: the motors brake)"})
+        rospy.loginfo("%s at %.2f m/s: at rest after %.2f s, %.3f m", what, v0, rest - t0,
+                      travelled)
+
+    def case_switch_off(self):
+        self.switch_off(signal.SIGTERM, "switch-off")
+
+    def case_computer_power_lost(self):
+        self.switch_off(signal.SIGKILL, "computer power lost")
+
     # ---- item 7: single faults after ISO 7176-14 --------------------------------------------
     def motor_fault(self, fault, what):
         s = self.s
@@ -287,12 +440,24 @@ class CommandPath(unittest.TestCase):
         self.figures.update({"speed_mps": round(v0, 2), "at_rest_s": round(rest - t0, 2)})
         # v^2 / 2a at 1 m/s^2 braking + 0.3 s of detection at v, + 5 cm
         self.assertLess(s.travelled(t0), v0 * v0 / 2.0 + 0.3 * v0 + 0.05, what)
+        return since
 
     def case_power_removed(self):
         self.motor_fault("power_off", "power removed")
 
     def case_frozen_encoder(self):
-        self.motor_fault("freeze_left_encoder", "frozen encoder")
+        # The driver's own check, before the localizer loses the chair (0.32 m at 0.7 m/s when
+        # the localizer noticed first): the other wheel turns at most 0.25 rad (r 0.17 m:
+        # 4.3 cm), 0.1 s of frames and latching, then the motor controller's brake (>= 2 m/s^2;
+        # measured 4), + 3 cm.
+        s = self.s
+        since = self.motor_fault("freeze_left_encoder", "frozen encoder")
+        v0, travelled = self.figures["speed_mps"], self.figures["travelled_m"]
+        self.assertLess(travelled, 0.25 * 0.17 + 0.1 * v0 + v0 * v0 / 4.0 + 0.03,
+                        "frozen encoder: too far: " + s.describe(since))
+        _, stop = s.first_stop(since)
+        self.assertEqual(stop.reason, SafetyStatus.DRIVER_FAULT, describe_stop(stop))
+        self.assertEqual(stop.sentence, "a wheel sensor failed", describe_stop(stop))
 
     def case_output_fault(self):
         self.motor_fault("overcurrent_left", "output stage fault")

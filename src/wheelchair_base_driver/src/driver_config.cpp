@@ -23,6 +23,9 @@ std::string DriverConfig::validate() const {
       .positive("controller_wall_timeout", controller_wall_timeout)
       .positive("encoder_check_time", encoder_check_time)
       .positive("encoder_check_rate", encoder_check_rate)
+      .positive("encoder_check_angle", encoder_check_angle)
+      .positive("stall_torque", stall_torque)
+      .positive("stall_time", stall_time)
       .result();
 }
 
@@ -41,6 +44,9 @@ void readDriverConfig(wheelchair_core::ConfigReader& reader, DriverConfig& confi
   reader.read("controller_wall_timeout", config.controller_wall_timeout);
   reader.read("encoder_check_time", config.encoder_check_time);
   reader.read("encoder_check_rate", config.encoder_check_rate);
+  reader.read("encoder_check_angle", config.encoder_check_angle);
+  reader.read("stall_torque", config.stall_torque);
+  reader.read("stall_time", config.stall_time);
 }
 
 }  // namespace wheelchair_base_driver

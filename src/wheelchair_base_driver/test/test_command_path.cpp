@@ -268,20 +268,47 @@ TEST_F(CommandPathTest, TheDriverCutsTorqueAtMaxSpeedAndLatchesTheOverspeed) {
   EXPECT_GT(h.driver.counters().speed_limited, 0u);
 }
 
-// ISO 7176-14 single fault: one wheel's encoder frozen while driving -> a latched stop.
-TEST_F(CommandPathTest, AFrozenEncoderEndsTheDriveInALatchedStop) {
+// ISO 7176-14 single fault: one wheel's encoder frozen while driving -> a latched stop within a
+// bounded distance: the other wheel turns at most encoder_check_angle (+ one encoder frame).
+TEST_F(CommandPathTest, AFrozenEncoderEndsTheDriveWithinTheCheckAngle) {
   drive.run(1.0, 2.0);
   ASSERT_EQ(h.driver.state(), DriverState::kDriving);
+  const double rate = h.plant.rightRate();
+  ASSERT_GT(rate, 2.0) << "the wheels should turn fast enough for the angle to matter";
   h.controller.freezeEncoders(true, false);
-  const double t0 = h.now;
-  double latched_at = -1;
+  const double t0 = h.now, right0 = h.plant.wheelAngles().right;
+  double latched_at = -1, right_turned = 0.0;
   drive.run(1.0, 2.0, [&] {
-    if (latched_at < 0 && h.driver.latchCause() != LatchCause::kNone) latched_at = h.now;
+    if (latched_at >= 0 || h.driver.latchCause() == LatchCause::kNone) return;
+    latched_at = h.now;
+    right_turned = std::abs(h.plant.wheelAngles().right - right0);
   });
   ASSERT_GT(latched_at, 0);
-  EXPECT_LE(latched_at - t0, h.driver.config().encoder_check_time + 0.03);
+  const auto& c = h.driver.config();
+  EXPECT_LE(right_turned, c.encoder_check_angle + 0.02 * rate)
+      << "latched after " << latched_at - t0;
+  EXPECT_LT(latched_at - t0, c.encoder_check_time);  // the angle comes first at this speed
   EXPECT_EQ(h.driver.latchCause(), LatchCause::kEncoderFault);
   EXPECT_EQ(h.driver.sentence(), "a wheel sensor failed");
+  EXPECT_TRUE(h.plant.braked());
+}
+
+// Both encoders frozen: the odometry says the chair stands still while the controller pushes
+// harder and harder. Torque of stall_torque without a count for stall_time latches a stop.
+TEST_F(CommandPathTest, TorqueWithoutAnyWheelTurningEndsTheDrive) {
+  drive.run(0.5, 2.0);
+  ASSERT_EQ(h.driver.state(), DriverState::kDriving);
+  h.controller.freezeEncoders(true, true);
+  const double t0 = h.now;
+  const double pushed = h.driver.config().stall_torque;
+  double latched_at = -1;
+  drive.run(1.5, pushed, [&] {
+    if (latched_at < 0 && h.driver.latchCause() != LatchCause::kNone) latched_at = h.now;
+  });
+  ASSERT_GT(latched_at, 0) << "still " << driverStateName(h.driver.state());
+  EXPECT_LE(latched_at - t0, h.driver.config().stall_time + 0.03);
+  EXPECT_EQ(h.driver.latchCause(), LatchCause::kWheelFault);
+  EXPECT_EQ(h.driver.sentence(), "a wheel does not turn");
   EXPECT_TRUE(h.plant.braked());
 }
 

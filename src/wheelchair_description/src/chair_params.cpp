@@ -60,6 +60,19 @@ std::string ChairParams::validate() const {
       {rear_laser_z, "rear_laser/z"}, {rear_laser_yaw, "rear_laser/yaw"}};
   for (const auto& [value, name] : mount)
     checks.check(std::isfinite(value), named(name) + " is not finite");
+  const std::pair<double, const char*> stop_positive[] = {
+      {stop.brake_decel, "protective_field/brake_decel"},
+      {stop.brake_jerk, "protective_field/brake_jerk"}};
+  for (const auto& [value, name] : stop_positive)
+    checks.check(std::isfinite(value) && value > 0.0,
+                 named(name) + " must be finite and positive (got " + number(value) + ")");
+  const std::pair<double, const char*> stop_non_negative[] = {
+      {stop.reaction_time, "protective_field/reaction_time"},
+      {stop.drive_accel, "protective_field/drive_accel"},
+      {stop.margin, "protective_field/margin"}};
+  for (const auto& [value, name] : stop_non_negative)
+    checks.check(std::isfinite(value) && value >= 0.0,
+                 named(name) + " must be finite and >= 0 (got " + number(value) + ")");
   return checks.result();
 }
 
@@ -89,6 +102,13 @@ void readChairParams(wheelchair_core::ConfigReader& reader, ChairParams& p) {
   reader.require("rear_laser/y", p.rear_laser_y);
   reader.require("rear_laser/z", p.rear_laser_z);
   reader.require("rear_laser/yaw", p.rear_laser_yaw);
+  requireGroup(reader, "protective_field",
+               "{reaction_time, brake_decel, brake_jerk, drive_accel, margin}");
+  reader.require("protective_field/reaction_time", p.stop.reaction_time);
+  reader.require("protective_field/brake_decel", p.stop.brake_decel);
+  reader.require("protective_field/brake_jerk", p.stop.brake_jerk);
+  reader.require("protective_field/drive_accel", p.stop.drive_accel);
+  reader.require("protective_field/margin", p.stop.margin);
 }
 
 ChairParams loadChairParams(const std::string& yaml_path) {

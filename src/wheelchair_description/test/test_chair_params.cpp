@@ -95,7 +95,9 @@ TEST(ChairParams, EachKeyFillsItsOwnMember) {
                          "width: 0.6\nlength: 1.0\n"
                          "footprint: [[0.3, 0.4], [-0.6, 0.4], [-0.6, -0.4], [0.3, -0.4]]\n"
                          "laser: {x: 0.31, y: -0.02, z: 0.12, yaw: 0.1}\n"
-                         "rear_laser: {x: -0.71, y: 0.03, z: 0.09, yaw: 3.0}\n";
+                         "rear_laser: {x: -0.71, y: 0.03, z: 0.09, yaw: 3.0}\n"
+                         "protective_field: {reaction_time: 0.31, brake_decel: 0.51, "
+                         "brake_jerk: 1.1, drive_accel: 0.36, margin: 0.21}\n";
   const ChairParams p = loadChairParams(path);
   EXPECT_EQ(p.total_mass, 101.0);
   EXPECT_EQ(p.wheel_mass, 3.1);
@@ -121,6 +123,11 @@ TEST(ChairParams, EachKeyFillsItsOwnMember) {
   EXPECT_EQ(p.rear_laser_y, 0.03);
   EXPECT_EQ(p.rear_laser_z, 0.09);
   EXPECT_EQ(p.rear_laser_yaw, 3.0);
+  EXPECT_EQ(p.stop.reaction_time, 0.31);
+  EXPECT_EQ(p.stop.brake_decel, 0.51);
+  EXPECT_EQ(p.stop.brake_jerk, 1.1);
+  EXPECT_EQ(p.stop.drive_accel, 0.36);
+  EXPECT_EQ(p.stop.margin, 0.21);
   EXPECT_DOUBLE_EQ(p.inscribedRadius(), 0.3);
   EXPECT_DOUBLE_EQ(p.circumscribedRadius(), std::hypot(0.6, 0.4));
 }
@@ -148,6 +155,22 @@ TEST(ChairParams, EachMissingKeyIsNamed) {
   expectErrorNaming(chairFileWith("rear_laser", ""), "rear_laser");
   expectErrorNaming(chairFileWith("rear_laser", "rear_laser: {x: -0.75, y: 0.0, z: 0.08}"),
                     "rear_laser/yaw");
+  expectErrorNaming(chairFileWith("protective_field", ""), "protective_field");
+  expectErrorNaming(chairFileWith("protective_field",
+                                  "protective_field: {reaction_time: 0.3, brake_decel: 0.5, "
+                                  "brake_jerk: 1.0, drive_accel: 0.35}"),
+                    "protective_field/margin");
+}
+
+TEST(ChairParams, AStopThatCannotBrakeIsNamed) {
+  expectErrorNaming(chairFileWith("protective_field",
+                                  "protective_field: {reaction_time: 0.3, brake_decel: 0.0, "
+                                  "brake_jerk: 1.0, drive_accel: 0.35, margin: 0.2}"),
+                    "protective_field/brake_decel");
+  expectErrorNaming(chairFileWith("protective_field",
+                                  "protective_field: {reaction_time: -0.1, brake_decel: 0.5, "
+                                  "brake_jerk: 1.0, drive_accel: 0.35, margin: 0.2}"),
+                    "protective_field/reaction_time");
 }
 
 TEST(ChairParams, EachNonFiniteValueIsNamed) {

@@ -18,6 +18,7 @@
 #include <wheelchair_msgs/NavigatorState.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/drive_channel.h>
+#include <wheelchair_ros/expected_publisher.h>
 #include <wheelchair_ros/parameters.h>
 
 #include <actionlib/client/simple_action_client.h>
@@ -45,11 +46,21 @@ struct HmiNodeletConfig {
   std::string navigator_action = "navigate";
   std::string navigator_state = "navigator/state";
   std::string localization_status = "localization/status";
+  /// The one node whose /switch presses and /hmi/go_to choices are the rider's (a choice
+  /// releases a latched stop and drives): any other publisher is refused and reported.
+  std::string switch_publisher = "/switch_keyboard";
+  std::string go_to_publisher = "/display";
 
   std::string validate() const {
     const std::string scanner_problem = scanner.validate();
+    const std::string switch_problem =
+        wheelchair_ros::publisherNameProblem("switch_publisher", switch_publisher);
+    const std::string go_to_problem =
+        wheelchair_ros::publisherNameProblem("go_to_publisher", go_to_publisher);
     wheelchair_core::ConfigChecks checks;
     checks.check(scanner_problem.empty(), scanner_problem)
+        .check(switch_problem.empty(), switch_problem)
+        .check(go_to_problem.empty(), go_to_problem)
         .check(!map_frame.empty(), "map_frame must not be empty")
         .check(!navigator_action.empty(), "navigator_action must name the navigator's action");
     return checks.result();
@@ -66,6 +77,8 @@ void readHmiNodeletConfig(wheelchair_core::ConfigReader& reader, HmiNodeletConfi
   reader.read("navigator_action", config.navigator_action);
   reader.read("navigator_state", config.navigator_state);
   reader.read("localization_status", config.localization_status);
+  reader.read("switch_publisher", config.switch_publisher);
+  reader.read("go_to_publisher", config.go_to_publisher);
 }
 
 class HmiNodelet : public nodelet::Nodelet {
@@ -95,6 +108,10 @@ class HmiNodelet : public nodelet::Nodelet {
     announce_pub_ = nh.advertise<std_msgs::String>("hmi/announce", 10, true);
     state_pub_ = std::make_unique<HmiStatePublisher>(nh);
     marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("hmi/markers", 1, true);
+    switch_guard_ = std::make_unique<wheelchair_ros::ExpectedPublisher>(nh.resolveName("switch"),
+                                                                        config.switch_publisher);
+    go_to_guard_ = std::make_unique<wheelchair_ros::ExpectedPublisher>(nh.resolveName("hmi/go_to"),
+                                                                       config.go_to_publisher);
     switch_sub_ = nh.subscribe("switch", 10, &HmiNodelet::onSwitch, this);
     go_to_sub_ = nh.subscribe("hmi/go_to", 1, &HmiNodelet::onGoTo, this);
     finished_sub_ = nh.subscribe("hmi/finished", 1, &HmiNodelet::onFinished, this);
@@ -158,7 +175,10 @@ class HmiNodelet : public nodelet::Nodelet {
     state_pub_->publish(state);
   }
 
-  void onSwitch(const std_msgs::Empty::ConstPtr&) {
+  /// A press of the rider's switch (its one publisher only: another node's press could choose a
+  /// destination, which releases a stop and drives).
+  void onSwitch(const ros::MessageEvent<std_msgs::Empty const>& event) {
+    if (!switch_guard_->accept(event.getPublisherName())) return;
     ClientCommand command;
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -176,10 +196,12 @@ class HmiNodelet : public nodelet::Nodelet {
     perform(command);
   }
 
-  void onGoTo(const std_msgs::String::ConstPtr& msg) {
+  /// A place chosen by name (its one publisher only, as the switch).
+  void onGoTo(const ros::MessageEvent<std_msgs::String const>& event) {
+    if (!go_to_guard_->accept(event.getPublisherName())) return;
     wheelchair_msgs::GoToPlace::Request request;
     wheelchair_msgs::GoToPlace::Response response;
-    request.name = msg->data;
+    request.name = event.getMessage()->data;
     onGoToService(request, response);
   }
 
@@ -402,6 +424,7 @@ class HmiNodelet : public nodelet::Nodelet {
   std::string map_frame_;
   ros::Publisher stop_pub_, announce_pub_, marker_pub_;
   ros::Subscriber switch_sub_, go_to_sub_, finished_sub_, state_sub_, localization_sub_;
+  std::unique_ptr<wheelchair_ros::ExpectedPublisher> switch_guard_, go_to_guard_;
   std::optional<wheelchair_msgs::NavigateGoal> waiting_goal_;  ///< for the server to be seen
   ros::WallTime waiting_since_;
   static constexpr double kConnectTimeout = 5.0;  ///< [s] wall

@@ -35,6 +35,7 @@ void readSafetyLimits(wheelchair_core::ConfigReader& reader, SafetyLimits& limit
   reader.read("rear_scan_timeout", limits.rear_scan_timeout);
   reader.read("rear_stop_distance", limits.rear_stop_distance);
   reader.read("rear_overhang", limits.rear_overhang);
+  reader.read("require_localizer", limits.require_localizer);
 }
 
 }  // namespace wheelchair_safety

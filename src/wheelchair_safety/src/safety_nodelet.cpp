@@ -11,6 +11,7 @@
 // manager's shared pool, and a scan never waits for tf inside a callback: the supervisor's view
 // of the laser and its permits do not wait behind another nodelet's callback (under the legacy
 // PC's CPU cap a 50 ms tf wait per scan held its permit timer past the driver's 100 ms).
+#include <wheelchair_description/chair_file.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/drive_channel.h>
@@ -35,6 +36,7 @@
 
 #include <pthread.h>
 
+#include <algorithm>
 #include <atomic>
 #include <deque>
 #include <memory>
@@ -53,6 +55,9 @@ struct SafetyNodeletConfig {
   /// [Hz] checks per second (and at once on a new goal), each with a permit to the driver: the
   /// command rate (the driver's permit_timeout is 100 ms).
   double rate = 50.0;
+  /// The chair (wheelchair_description's chair.yaml, found at run time; "" = that one): the
+  /// field's stop and its front, the corridor's width and the rear overhang come from it.
+  std::string chair_file;
   std::string map_frame = "map";
   std::string odom_frame = "odom";  ///< a scan is placed by odometry at its stamp, then map -> odom
   std::string base_frame = "base_link";
@@ -77,9 +82,31 @@ void readSafetyNodeletConfig(wheelchair_core::ConfigReader& reader, SafetyNodele
   readProtectiveField(reader, config.field);
   wheelchair_core::readMapLimits(reader, config.map_limits);
   reader.read("rate", config.rate);
+  reader.read("chair_file", config.chair_file);
   reader.read("map_frame", config.map_frame);
   reader.read("odom_frame", config.odom_frame);
   reader.read("base_frame", config.base_frame);
+}
+
+/// The defaults that are the chair's (its file, one place): the protective field's stop
+/// (protective_field/...) and front (the footprint's), the corridor (half the width + 10 cm),
+/// the rear overhang (the footprint's). A private parameter still overrides each (tests).
+SafetyNodeletConfig chairDefaults(const wheelchair_description::ChairParams& chair) {
+  SafetyNodeletConfig config;
+  double front = 0.0, rear = 0.0;
+  for (const Eigen::Vector2d& corner : chair.footprint) {
+    front = std::max(front, corner.x());
+    rear = std::max(rear, -corner.x());
+  }
+  config.field.reaction_time = chair.stop.reaction_time;
+  config.field.brake_decel = chair.stop.brake_decel;
+  config.field.brake_jerk = chair.stop.brake_jerk;
+  config.field.drive_accel = chair.stop.drive_accel;
+  config.field.margin = chair.stop.margin;
+  config.field.front_offset = front;
+  config.limits.corridor_half_width = 0.5 * chair.width + 0.10;
+  config.limits.rear_overhang = rear;
+  return config;
 }
 
 class SafetyNodelet : public nodelet::Nodelet {
@@ -104,8 +131,16 @@ class SafetyNodelet : public nodelet::Nodelet {
     } catch (const std::logic_error& e) {
       throw wheelchair_core::ConfigError(getName() + ": " + e.what());
     }
+    ros::NodeHandle& pnh = getPrivateNodeHandle();
     const auto config = wheelchair_ros::loadParameters<SafetyNodeletConfig>(
-        getPrivateNodeHandle(), readSafetyNodeletConfig);
+        pnh, readSafetyNodeletConfig, chairDefaults(wheelchair_description::loadChairOf(pnh)));
+    // The field in effect, for the log and for tests that place a person at its edge.
+    pnh.setParam("field/reaction_time", config.field.reaction_time);
+    pnh.setParam("field/brake_decel", config.field.brake_decel);
+    pnh.setParam("field/brake_jerk", config.field.brake_jerk);
+    pnh.setParam("field/drive_accel", config.field.drive_accel);
+    pnh.setParam("field/margin", config.field.margin);
+    pnh.setParam("field/front_offset", config.field.front_offset);
     map_frame_ = config.map_frame;
     odom_frame_ = config.odom_frame;
     base_frame_ = config.base_frame;

@@ -174,21 +174,7 @@ bool SafetySupervisor::knownObstacleNear(const Eigen::Vector2d& point) const {
   return false;
 }
 
-SafetyVerdict SafetySupervisor::evaluate(double now) const {
-  if (user_stop_) return stopFor(StopReason::kUserStop, "switch pressed while driving");
-  if (driver_fault_ && now - driver_fault_since_ >= limits_.driver_fault_grace)
-    return stopFor(StopReason::kDriverFault, driver_detail_, now - driver_fault_since_,
-                   limits_.driver_fault_grace);
-  if (scan_stamp_ < 0.0 || pose_stamp_ < 0.0 || localization_stamp_ < 0.0)
-    return stopFor(StopReason::kNoData, scan_stamp_ < 0.0   ? "no laser scan yet"
-                                        : pose_stamp_ < 0.0 ? "no pose yet"
-                                                            : "no localization status yet");
-  if (now - scan_stamp_ > limits_.scan_timeout)
-    return stopFor(StopReason::kLaserSilent, seconds("no laser scan", now - scan_stamp_),
-                   now - scan_stamp_, limits_.scan_timeout);
-  if (now - pose_stamp_ > limits_.pose_timeout)
-    return stopFor(StopReason::kPoseStale, seconds("no pose update", now - pose_stamp_),
-                   now - pose_stamp_, limits_.pose_timeout);
+SafetyVerdict SafetySupervisor::evaluateLocalization(double now) const {
   if (now - localization_stamp_ > limits_.localization_timeout)
     return stopFor(StopReason::kLocalizationLost,
                    seconds("no localization status", now - localization_stamp_),
@@ -206,6 +192,29 @@ SafetyVerdict SafetySupervisor::evaluate(double now) const {
     const bool position = xy_std > limits_.max_position_std;
     return stopFor(StopReason::kCovarianceTooLarge, text, position ? xy_std : heading_std,
                    position ? limits_.max_position_std : limits_.max_heading_std);
+  }
+  return {};
+}
+
+SafetyVerdict SafetySupervisor::evaluate(double now) const {
+  if (user_stop_) return stopFor(StopReason::kUserStop, "switch pressed while driving");
+  if (driver_fault_ && now - driver_fault_since_ >= limits_.driver_fault_grace)
+    return stopFor(StopReason::kDriverFault, driver_detail_, now - driver_fault_since_,
+                   limits_.driver_fault_grace);
+  const bool localizer = limits_.require_localizer;
+  if (scan_stamp_ < 0.0 || pose_stamp_ < 0.0 || (localizer && localization_stamp_ < 0.0))
+    return stopFor(StopReason::kNoData, scan_stamp_ < 0.0   ? "no laser scan yet"
+                                        : pose_stamp_ < 0.0 ? "no pose yet"
+                                                            : "no localization status yet");
+  if (now - scan_stamp_ > limits_.scan_timeout)
+    return stopFor(StopReason::kLaserSilent, seconds("no laser scan", now - scan_stamp_),
+                   now - scan_stamp_, limits_.scan_timeout);
+  if (now - pose_stamp_ > limits_.pose_timeout)
+    return stopFor(StopReason::kPoseStale, seconds("no pose update", now - pose_stamp_),
+                   now - pose_stamp_, limits_.pose_timeout);
+  if (localizer) {
+    const SafetyVerdict lost = evaluateLocalization(now);
+    if (lost.stop) return lost;
   }
   const SafetyVerdict behind = rear_.evaluate(now, pose_);
   if (behind.stop) return behind;

@@ -144,3 +144,30 @@ TEST(SafetySupervisor, UserStopWins) {
   s.onUserCommand(10.2);
   EXPECT_FALSE(s.check(10.2).stop);
 }
+
+// Mapping mode (require_localizer false): no localizer to wait for, SLAM's pose is the pose;
+// the laser, the pose's age and the field ahead are still watched.
+TEST(SafetySupervisor, WithoutALocalizerTheLaserPoseAndFieldStillStop) {
+  SafetyLimits limits;
+  limits.require_localizer = false;
+  SafetySupervisor s(limits);
+  s.onMap(corridorMap());
+  s.onPath(straightPath());
+  s.onPose(10.0, Pose2D{2.0, 2.0, 0.0});
+  s.onScan(10.0, {});
+  EXPECT_FALSE(s.check(10.1).stop) << s.check(10.1).detail;  // no localizer status ever
+  s.onPose(10.2, Pose2D{2.0, 2.0, 0.0});
+  s.onScan(10.2, personAt(2.9, 2.1));  // 0.9 m ahead, on the path
+  EXPECT_EQ(s.check(10.25).reason, StopReason::kUnexpectedObstacle);
+
+  SafetySupervisor silent(limits);
+  silent.onPose(10.0, Pose2D{2.0, 2.0, 0.0});
+  silent.onScan(10.0, {});
+  silent.onPose(10.4, Pose2D{2.0, 2.0, 0.0});
+  EXPECT_EQ(silent.check(10.4).reason, StopReason::kLaserSilent);
+
+  SafetySupervisor required;  // the default: a localizer's status is required
+  required.onPose(10.0, Pose2D{2.0, 2.0, 0.0});
+  required.onScan(10.0, {});
+  EXPECT_EQ(required.check(10.1).reason, StopReason::kNoData);
+}

@@ -19,7 +19,8 @@
 //    silence the chair never resumes on its own);
 //  - a corrupted command stream (the MC reports bad command frames, or protocol frames that do
 //    not decode arrive) while driving; a speed over max_speed; a wheel that does not count while
-//    the other turns (a frozen encoder); a motor controller silent in wall time while driving.
+//    the other turns (a frozen encoder), a wheel that does not turn under torque or speeds up
+//    against it (WheelMotionCheck); a motor controller silent in wall time while driving.
 // A latch that leaves the command path intact (foreign command, corrupted stream, overspeed) and
 // the supervisor's own stop (permit.stop) let the controller's controlled stop run for at most
 // stop_window seconds, then brake; the others brake at once. The driver also limits torque (a
@@ -29,6 +30,7 @@
 
 #include <wheelchair_base_driver/driver_config.h>
 #include <wheelchair_base_driver/encoder_odometry.h>
+#include <wheelchair_base_driver/wheel_motion_check.h>
 #include <wheelchair_can/protocol.h>
 #include <wheelchair_can/sequence_tracker.h>
 #include <wheelchair_can/transport.h>
@@ -81,6 +83,7 @@ enum class LatchCause {
   kCorruptStream,      ///< bad command frames / undecodable protocol frames while driving
   kOverspeed,          ///< faster than max_speed
   kEncoderFault,       ///< a wheel does not count while the other turns under torque
+  kWheelFault,         ///< a wheel does not turn under torque, or speeds up against it
   kControllerStalled,  ///< the MC silent for controller_wall_timeout of wall time while driving
 };
 const char* latchCauseName(LatchCause cause);
@@ -226,9 +229,8 @@ class BaseDriverCore {
       wheelchair_can::protocol::ControllerState::kInit;
   std::uint16_t mc_faults_ = 0;
   wheelchair_can::SequenceTracker encoder_sequence_;
-  double encoder_check_left_since_ = NAN, encoder_check_right_since_ = NAN;
+  WheelMotionCheck wheel_check_;
   double overspeed_since_ = NAN;  ///< since when the speed is within max_speed
-  double last_left_angle_ = 0.0, last_right_angle_ = 0.0;
 
   wheelchair_can::protocol::TorqueCommand last_sent_;
   std::uint8_t command_sequence_ = 0;

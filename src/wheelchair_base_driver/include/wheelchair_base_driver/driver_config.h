@@ -40,6 +40,16 @@ struct DriverConfig {
   /// than encoder_check_rate [rad/s] during a drive has a failed encoder: latched stop.
   double encoder_check_time = 0.3;
   double encoder_check_rate = 1.0;
+  /// [rad] ... or while the other wheel turns this far (at 0.7 m/s about 0.05 s and 4 cm of
+  /// travel: a bounded distance, not only a time, whatever the speed).
+  double encoder_check_angle = 0.25;
+  /// [N m] a wheel commanded at least this torque (either sign) that does not count for
+  /// stall_time [s] (both encoders dead, a motor or gearbox disconnected, a blocked wheel), or
+  /// that turns faster than encoder_check_rate against it and speeds up (an encoder wired
+  /// backwards, a runaway), has failed: latched stop. Braking against the motion slows the
+  /// wheel and is not a fault.
+  double stall_torque = 20.0;
+  double stall_time = 0.4;
 
   /// "" if usable, else every problem, each naming its value.
   std::string validate() const;
@@ -47,7 +57,8 @@ struct DriverConfig {
 
 /// Keys: counts_per_rev, max_wheel_rate, max_torque, max_speed, command_rate [Hz]
 /// (1 / command_period), command_timeout, controller_timeout, permit_timeout, stop_window,
-/// controller_wall_timeout, encoder_check_time, encoder_check_rate. The wheel radius and half
+/// controller_wall_timeout, encoder_check_time, encoder_check_rate, encoder_check_angle,
+/// stall_torque, stall_time. The wheel radius and half
 /// track are not keys: they are the chair file's.
 void readDriverConfig(wheelchair_core::ConfigReader& reader, DriverConfig& config);
 

@@ -29,6 +29,7 @@
 #include <std_msgs/String.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/drive_channel.h>
+#include <wheelchair_ros/expected_publisher.h>
 
 #include <condition_variable>
 #include <cstdint>
@@ -64,7 +65,7 @@ class ControllerNodelet : public nodelet::Nodelet {
   void onHold(const wheelchair_ros::SafetyHold& hold);
   /// The driver's state (drive channel): a latched stop ends the drive.
   void onDriverReport(const wheelchair_ros::DriverReport& report);
-  void onSpeedLimit(const std_msgs::Float64::ConstPtr& msg);
+  void onSpeedLimit(const ros::MessageEvent<std_msgs::Float64 const>& event);
   void onUserStop(const std_msgs::Empty::ConstPtr& msg);
   void onLocalizationStatus(const wheelchair_msgs::LocalizationStatus::ConstPtr& msg);
   void buildReferences();  ///< worker thread
@@ -85,6 +86,7 @@ class ControllerNodelet : public nodelet::Nodelet {
   std::shared_ptr<tf2_ros::Buffer> tf_buffer_;
   ros::Subscriber path_sub_, odom_sub_, user_stop_sub_, localization_sub_;
   ros::Subscriber speed_limit_sub_;
+  std::unique_ptr<wheelchair_ros::ExpectedPublisher> speed_limit_guard_;
   ros::Publisher torque_pub_, reference_pub_, error_pub_, status_pub_, path_status_pub_;
   ros::Timer timer_;
   std::string last_status_, last_path_status_;

@@ -92,6 +92,8 @@ void ControllerNodelet::onInit() {
   path_status_pub_ = pnh.advertise<actionlib_msgs::GoalStatus>("path_status", 10, true);
   worker_ = std::thread(&ControllerNodelet::buildReferences, this);
   path_sub_ = nh.subscribe("plan", 1, &ControllerNodelet::onPath, this);
+  speed_limit_guard_ = std::make_unique<wheelchair_ros::ExpectedPublisher>(
+      nh.resolveName("safety/speed_limit"), params.speed_limit_publisher);
   speed_limit_sub_ = nh.subscribe("safety/speed_limit", 1, &ControllerNodelet::onSpeedLimit, this);
   user_stop_sub_ = nh.subscribe("user_stop", 5, &ControllerNodelet::onUserStop, this);
   localization_sub_ =
@@ -167,9 +169,11 @@ void ControllerNodelet::onDriverReport(const wheelchair_ros::DriverReport& repor
   tracker_->abort("the motors stopped: " + report.sentence);
 }
 
-void ControllerNodelet::onSpeedLimit(const std_msgs::Float64::ConstPtr& msg) {
+void ControllerNodelet::onSpeedLimit(const ros::MessageEvent<std_msgs::Float64 const>& event) {
+  // Only the chair's supervisor: another node's limit (a raise above the field's) is refused.
+  if (!speed_limit_guard_->accept(event.getPublisherName())) return;
   std::lock_guard<std::mutex> lock(mutex_);
-  tracker_->setSpeedLimit(msg->data);
+  tracker_->setSpeedLimit(event.getMessage()->data);
 }
 
 void ControllerNodelet::onUserStop(const std_msgs::Empty::ConstPtr&) {

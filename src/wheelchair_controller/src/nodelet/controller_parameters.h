@@ -6,6 +6,7 @@
 #include <wheelchair_controller/tracker_config.h>
 #include <wheelchair_core/config.h>
 #include <wheelchair_description/chair_file.h>
+#include <wheelchair_ros/expected_publisher.h>
 
 #include <string>
 
@@ -23,9 +24,15 @@ struct ControllerParameters {
   /// chair restarts from rest on a new command instead of resuming a reference that ran on.
   double gap_timeout = 0.1;
   double wall_gap_timeout = 0.5;
+  /// The one node whose /safety/speed_limit is taken ("": this process, the chair's own
+  /// supervisor): another publisher's limit is refused and reported, so it can never raise it.
+  std::string speed_limit_publisher;
 
   std::string validate() const {
+    const std::string publisher_problem =
+        wheelchair_ros::publisherNameProblem("speed_limit_publisher", speed_limit_publisher);
     wheelchair_core::ConfigChecks checks;
+    checks.check(publisher_problem.empty(), publisher_problem);
     checks.positive("rate", rate)
         .positive("gap_timeout", gap_timeout)
         .positive("wall_gap_timeout", wall_gap_timeout)
@@ -47,6 +54,7 @@ inline void readControllerParameters(wheelchair_core::ConfigReader& reader,
   reader.read("rate", p.rate);
   reader.read("gap_timeout", p.gap_timeout);
   reader.read("wall_gap_timeout", p.wall_gap_timeout);
+  reader.read("speed_limit_publisher", p.speed_limit_publisher);
   readTrackerConfig(reader, p.tracker);
 }
 

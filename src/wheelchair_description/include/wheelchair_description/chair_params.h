@@ -38,6 +38,17 @@ struct ChairParams {
   /// Rear laser scanner mount in base_link, looking behind the chair (keys rear_laser/x ...
   /// rear_laser/yaw): what guards reverse motion.
   double rear_laser_x = 0.0, rear_laser_y = 0.0, rear_laser_z = 0.0, rear_laser_yaw = 0.0;
+  /// The controlled stop the safety supervisor's protective field plans for (keys
+  /// protective_field/reaction_time ... /margin): the field's stop zone is the chair's front
+  /// (footprint) + the distance of this stop + margin (wheelchair_safety/protective_field.h).
+  /// (A file must state them; these initial values only keep hand-built chairs of tests valid.)
+  struct StopFigures {
+    double reaction_time = 0.3;  ///< [s] from a return in the field to the brake's onset
+    double brake_decel = 0.5;    ///< [m/s^2] the controlled stop's deceleration
+    double brake_jerk = 1.0;     ///< [m/s^3] its ramp
+    double drive_accel = 0.35;   ///< [m/s^2] worst case still accelerating meanwhile
+    double margin = 0.2;         ///< [m] beyond the stop
+  } stop;
 
   /// Radius of the largest circle about P inside the footprint's width: width / 2.
   double inscribedRadius() const { return 0.5 * width; }
@@ -52,7 +63,8 @@ struct ChairParams {
 };
 
 /// Every key of a chair file, each required: the scalars by their member names, footprint
-/// (a list of [x, y]), laser/x, laser/y, laser/z, laser/yaw and rear_laser/x ... rear_laser/yaw.
+/// (a list of [x, y]), laser/x, laser/y, laser/z, laser/yaw, rear_laser/x ... rear_laser/yaw and
+/// protective_field/{reaction_time, brake_decel, brake_jerk, drive_accel, margin}.
 void readChairParams(wheelchair_core::ConfigReader& reader, ChairParams& params);
 
 /// Reads and validates a chair file. Throws wheelchair_core::ConfigError naming the file and

@@ -29,6 +29,10 @@ struct SafetyLimits {
   /// 0.3 * 0.2 s + 0.3^2 / (2 * 0.5 m/s^2) = 0.15 m; the rest is margin.
   double rear_stop_distance = 0.5;
   double rear_overhang = 0.80;  ///< [m] the body's reach behind the axle (chair.yaml footprint)
+  /// The pose is a localizer's: its status (/localization/status) and covariance are watched.
+  /// false in mapping mode: SLAM's map -> odom is the pose (its age, the laser, the field ahead
+  /// and the driver are still watched), there is no localizer to wait for.
+  bool require_localizer = true;
 
   /// "" if usable, else every problem.
   std::string validate() const;

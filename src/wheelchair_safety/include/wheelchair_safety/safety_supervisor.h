@@ -96,6 +96,8 @@ class SafetySupervisor {
 
  private:
   SafetyVerdict evaluate(double now) const;
+  /// The localizer's status and covariance (when limits.require_localizer).
+  SafetyVerdict evaluateLocalization(double now) const;
   bool knownObstacleNear(const Eigen::Vector2d& point) const;
 
   SafetyLimits limits_;
