@@ -45,7 +45,7 @@ class LeaveRoom(unittest.TestCase):
         backed = watch.reversed_distance(since.time)
         slowest = watch.slowest(since.time)
         self.assertGreater(backed, 0.5, "the chair did not back out: " + what)
-        self.assertGreater(slowest, -0.3 - 0.03, "reverse faster than 0.3 m/s")
+        self.assertGreater(slowest, -0.3, "reverse faster than 0.3 m/s: %.3f m/s" % -slowest)
         with s.lock:
             certs = [c for c in s.certificates if c.reversed_length > 0.0]
         self.assertTrue(certs, "no certificate with a reversed piece")
