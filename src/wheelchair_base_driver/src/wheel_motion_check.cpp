@@ -59,8 +59,11 @@ WheelVerdict WheelMotionCheck::checkWheel(const char* name, Wheel& w, const Whee
 
   const double still = now - w.counted_at;
   const double other_turned = std::abs(other.angle - w.other_at_count);
+  // The angle rule also needs the other wheel to have turned faster than encoder_check_rate on
+  // average meanwhile: a turn about a standing inner wheel (the other slow) is a real motion.
+  const bool other_fast = other_turned >= config_.encoder_check_rate * still;
   if ((still > config_.encoder_check_time && std::abs(other.rate) > config_.encoder_check_rate) ||
-      other_turned >= config_.encoder_check_angle)
+      (other_turned >= config_.encoder_check_angle && other_fast))
     return {WheelFault::kFrozenEncoder,
             format("%s encoder did not count for %.2f s while the other wheel turned %.2f rad",
                    name, still, other_turned)};

@@ -99,5 +99,15 @@ TEST(WheelMotionCheck, ATightTurnWithTheInnerWheelCreepingIsNoFault) {
   EXPECT_EQ(r.verdict.fault, WheelFault::kNone) << r.verdict.detail;
 }
 
+TEST(WheelMotionCheck, ASlowTurnAboutAStandingInnerWheelIsNoFault) {
+  // Seen in the one-switch drive: the left wheel stood 0.39 s while the right turned 0.25 rad
+  // (0.64 rad/s): the chair turning about its left wheel, not a failed encoder.
+  WheelMotionCheck check(config());
+  const Outcome r = run(check, 0.39, [&](double t) {
+    return std::make_pair(WheelState{2.0, 0.0, 0.0}, WheelState{6.0, 0.64 * t, 0.64});
+  });
+  EXPECT_EQ(r.verdict.fault, WheelFault::kNone) << r.verdict.detail;
+}
+
 }  // namespace
 }  // namespace wheelchair_base_driver

@@ -40,8 +40,9 @@ struct DriverConfig {
   /// than encoder_check_rate [rad/s] during a drive has a failed encoder: latched stop.
   double encoder_check_time = 0.3;
   double encoder_check_rate = 1.0;
-  /// [rad] ... or while the other wheel turns this far (at 0.7 m/s about 0.05 s and 4 cm of
-  /// travel: a bounded distance, not only a time, whatever the speed).
+  /// [rad] ... or while the other wheel turns this far faster than encoder_check_rate on average
+  /// (at 0.7 m/s about 0.05 s and 4 cm of travel: a bounded distance, not only a time, whatever
+  /// the speed; a slow turn about a standing inner wheel is no fault).
   double encoder_check_angle = 0.25;
   /// [N m] a wheel commanded at least this torque (either sign) that does not count for
   /// stall_time [s] (both encoders dead, a motor or gearbox disconnected, a blocked wheel), or

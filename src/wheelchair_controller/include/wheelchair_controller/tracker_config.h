@@ -25,10 +25,7 @@ struct TrackerConfig {
   /// Reverse pieces: the output point P_r lies this far behind the axle (README, "Reverse": the
   /// zero dynamics are stable only with the point on the side the chair moves towards).
   double reverse_lookahead = 0.15;  ///< L_r [m]
-  /// [m/s] the reverse reference's speed (at most 0.3, the limit backing up): 0.25 leaves room
-  /// for the tracking's catch-up after a localization correction (at 0.3 the chair was measured
-  /// backing out of flat's study at 0.335 m/s against the simulator's truth).
-  double reverse_max_speed = 0.25;
+  double reverse_max_speed = 0.3;   ///< [m/s] speed limit in reverse (at most 0.3)
   /// [rad] at a cusp (at rest) a larger difference between the heading the chair stops with and
   /// the next piece's start heading is turned in place (each piece is smoothed on its own, so
   /// their end tangents differ by a few degrees); driving off with it costs lateral jerk.
