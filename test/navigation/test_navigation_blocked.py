@@ -22,7 +22,8 @@ from wheelchair_msgs.msg import NavigateResult, NavigatorState
 from wheelchair_sim.srv import AddMovingObstacle
 
 from wheelchair_test.harness import Rider
-from wheelchair_test.harness.drives import Drives, check_arrived, clear_obstacles
+from wheelchair_test.harness.drives import (Drives, check_arrived, clear_obstacles,
+                                            layer_occupied_near)
 
 HALL_START = (5.1, 4.9, 1.5708)  # living_door, facing the hallway's door
 GOAL_BEHIND = "toilet"  # the bathroom's one door: hallway_bathroom
@@ -73,20 +74,8 @@ class Blocked(unittest.TestCase):
         self.assertGreater(math.hypot(x - DOORWAY[0], y - DOORWAY[1]), 0.6, "too close")
 
     def doorway_in_layer(self):
-        """Whether the live obstacle layer (/obstacles) has anything within 0.4 m of the
-        doorway (None: no layer seen yet)."""
-        grid = self.layer
-        if grid is None:
-            return None
-        info, r = grid.info, 0.4
-        for dy in range(-8, 9):
-            for dx in range(-8, 9):
-                x, y = DOORWAY[0] + dx * r / 8, DOORWAY[1] + dy * r / 8
-                i = int((x - info.origin.position.x) / info.resolution)
-                j = int((y - info.origin.position.y) / info.resolution)
-                if 0 <= i < info.width and 0 <= j < info.height and grid.data[j * info.width + i] >= 50:
-                    return True
-        return False
+        """Whether /obstacles has anything within 0.4 m of the doorway (None: no layer yet)."""
+        return layer_occupied_near(self.layer, DOORWAY, 0.4)
 
     def test_2_the_obstacle_taken_away_the_chair_resumes_without_a_new_command(self):
         s, d = self.s, self.d

@@ -17,7 +17,8 @@ from wheelchair_msgs.msg import NavigatorState
 from wheelchair_sim.srv import AddMovingObstacle
 
 from wheelchair_test.harness import Rider
-from wheelchair_test.harness.drives import Drives, check_arrived, clear_obstacles
+from wheelchair_test.harness.drives import (Drives, check_arrived, clear_obstacles,
+                                            layer_occupied_near)
 
 HALL_START = (5.1, 4.9, 1.5708)  # living_door, facing the hallway's door
 DOORWAY = (4.45, 7.20)  # hallway_bathroom (flat.doors.yaml), 0.80 m wide
@@ -35,10 +36,8 @@ class BlockedAtTheStart(unittest.TestCase):
         rospy.Subscriber("/obstacles", OccupancyGrid, lambda m: setattr(cls, "layer", m))
 
     def doorway_in_layer(self):
-        """Whether /obstacles has anything within 0.4 m of the doorway."""
-        grid = self.layer
-        if grid is None:
-            return False
+        """Whether /obstacles has anything within 0.4 m of the doorway (None: no layer yet)."""
+        return layer_occupied_near(self.layer, DOORWAY, 0.4)
         info, r = grid.info, 0.4
         for dy in range(-8, 9):
             for dx in range(-8, 9):

@@ -180,3 +180,19 @@ class Drive:
             return f"status {self.status()}; navigator said {told}"
         return (f"status {self.status()}, {reason_name(r.reason)}: '{r.sentence}' [{r.detail}]; "
                 f"navigator said {told}")
+
+
+def layer_occupied_near(grid, point, radius=0.4):
+    """Whether an OccupancyGrid (the live obstacle layer) has an occupied cell (>= 50) within
+    `radius` of `point` (x, y), sampled on a 17 x 17 lattice; None while no layer was seen."""
+    if grid is None:
+        return None
+    info = grid.info
+    for dy in range(-8, 9):
+        for dx in range(-8, 9):
+            x, y = point[0] + dx * radius / 8, point[1] + dy * radius / 8
+            i = int((x - info.origin.position.x) / info.resolution)
+            j = int((y - info.origin.position.y) / info.resolution)
+            if 0 <= i < info.width and 0 <= j < info.height and grid.data[j * info.width + i] >= 50:
+                return True
+    return False
