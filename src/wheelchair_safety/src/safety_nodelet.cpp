@@ -223,13 +223,21 @@ class SafetyNodelet : public nodelet::Nodelet {
     placeWaiting();
   }
 
+  /// A scan's returns in the map frame, its sensor at `in_map` (`scan` mirrored in place when
+  /// the sensor is mounted upside down; `sensor_pose` set to the sensor's 2D pose).
+  static std::vector<Eigen::Vector2d> placedReturns(wheelchair_core::LaserScan2D& scan,
+                                                    const geometry_msgs::Transform& in_map,
+                                                    wheelchair_core::Pose2D& sensor_pose) {
+    if (wheelchair_ros::laserPose2D(in_map, sensor_pose))
+      wheelchair_core::mirrorScanAngles(scan);  // mounted upside down
+    return wheelchair_core::scanEndpoints(scan, sensor_pose);
+  }
+
   /// The front scan, placed: its returns and what the laser sees along the path.
   void useScan(const sensor_msgs::LaserScan& msg, const geometry_msgs::Transform& laser_in_map) {
     wheelchair_core::LaserScan2D scan = wheelchair_ros::fromLaserScanMsg(msg);
     wheelchair_core::Pose2D laser_pose;
-    if (wheelchair_ros::laserPose2D(laser_in_map, laser_pose))
-      wheelchair_core::mirrorScanAngles(scan);  // mounted upside down
-    const auto returns = wheelchair_core::scanEndpoints(scan, laser_pose);
+    const auto returns = placedReturns(scan, laser_in_map, laser_pose);
     std::lock_guard<std::mutex> lock(mutex_);
     supervisor_->onScan(msg.header.stamp.toSec(), returns);
     supervisor_->onLaserView(scan, laser_pose);
@@ -239,9 +247,7 @@ class SafetyNodelet : public nodelet::Nodelet {
   void useRearScan(const sensor_msgs::LaserScan& msg, const geometry_msgs::Transform& in_map) {
     wheelchair_core::LaserScan2D scan = wheelchair_ros::fromLaserScanMsg(msg);
     wheelchair_core::Pose2D sensor_pose;
-    if (wheelchair_ros::laserPose2D(in_map, sensor_pose))
-      wheelchair_core::mirrorScanAngles(scan);  // mounted upside down
-    const auto returns = wheelchair_core::scanEndpoints(scan, sensor_pose);
+    const auto returns = placedReturns(scan, in_map, sensor_pose);
     std::lock_guard<std::mutex> lock(mutex_);
     supervisor_->onRearScan(msg.header.stamp.toSec(), returns);
   }
