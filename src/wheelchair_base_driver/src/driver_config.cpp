@@ -24,6 +24,7 @@ std::string DriverConfig::validate() const {
       .positive("encoder_check_time", encoder_check_time)
       .positive("encoder_check_rate", encoder_check_rate)
       .positive("encoder_check_angle", encoder_check_angle)
+      .positive("encoder_check_torque", encoder_check_torque)
       .positive("stall_torque", stall_torque)
       .positive("stall_time", stall_time)
       .result();
@@ -45,6 +46,7 @@ void readDriverConfig(wheelchair_core::ConfigReader& reader, DriverConfig& confi
   reader.read("encoder_check_time", config.encoder_check_time);
   reader.read("encoder_check_rate", config.encoder_check_rate);
   reader.read("encoder_check_angle", config.encoder_check_angle);
+  reader.read("encoder_check_torque", config.encoder_check_torque);
   reader.read("stall_torque", config.stall_torque);
   reader.read("stall_time", config.stall_time);
 }

@@ -10,6 +10,11 @@ std::string format(const char* fmt, const char* wheel, double a, double b) {
   std::snprintf(text, sizeof(text), fmt, wheel, a, b);
   return text;
 }
+std::string format4(const char* fmt, double a, double b, double c, double d) {
+  char text[200];
+  std::snprintf(text, sizeof(text), fmt, a, b, c, d);
+  return text;
+}
 bool opposite(double rate, double torque) { return rate * torque < 0.0; }
 }  // namespace
 
@@ -32,6 +37,7 @@ void WheelMotionCheck::onEncoder(double stamp, double left_angle, double right_a
       w.angle = angles[i];
       w.counted_at = stamp;
       w.other_at_count = angles[1 - i];
+      w.max_torque = 0.0;
     }
   }
 }
@@ -57,16 +63,26 @@ WheelVerdict WheelMotionCheck::checkWheel(const char* name, Wheel& w, const Whee
   }
   if (!counting || !std::isfinite(w.counted_at)) return {};  // a silent MC is another fault
 
+  w.max_torque = std::max(w.max_torque, std::abs(s.torque));
   const double still = now - w.counted_at;
   const double other_turned = std::abs(other.angle - w.other_at_count);
   // The angle rule also needs the other wheel to have turned faster than encoder_check_rate on
   // average meanwhile: a turn about a standing inner wheel (the other slow) is a real motion.
   const bool other_fast = other_turned >= config_.encoder_check_rate * still;
-  if ((still > config_.encoder_check_time && std::abs(other.rate) > config_.encoder_check_rate) ||
-      (other_turned >= config_.encoder_check_angle && other_fast))
+  // And the wheel's motor must push it (|torque| >= encoder_check_torque): a wheel that stands
+  // while the other turns under the driving torques of a pivot (rolling resistance and the
+  // comfort acceleration need < 6 N m) is the chair turning about it; with a frozen encoder the
+  // controller, seeing the wheel stand, pushes it hard within a few frames (36 N m in 0.09 s in
+  // the frozen_encoder system test).
+  const bool pushed_to_move = std::abs(s.torque) >= config_.encoder_check_torque;
+  if (pushed_to_move &&
+      ((still > config_.encoder_check_time && std::abs(other.rate) > config_.encoder_check_rate) ||
+       (other_turned >= config_.encoder_check_angle && other_fast)))
     return {WheelFault::kFrozenEncoder,
             format("%s encoder did not count for %.2f s while the other wheel turned %.2f rad",
-                   name, still, other_turned)};
+                   name, still, other_turned) +
+                format4(" (its torque %.1f N m, max %.1f; the other at %.2f rad/s, %.1f N m)",
+                        s.torque, w.max_torque, other.rate, other.torque)};
   if (pushed && now - std::max(w.pushed_since, w.counted_at) >= config_.stall_time)
     return {WheelFault::kStalled, format("%s wheel did not turn for %.2f s under %.1f N m", name,
                                          now - std::max(w.pushed_since, w.counted_at), s.torque)};

@@ -31,7 +31,7 @@ struct Drive {
         next = h.now + 0.02;
         const bool stopping = h.driver.latchCause() != LatchCause::kNone || h.stop;
         if (!stopping) {
-          h.torque(torque, torque);
+          h.torque(torque + left_push, torque);
         } else {
           const double rate = 0.5 * (h.plant.leftRate() + h.plant.rightRate());
           const bool at_rest = std::abs(rate) < 0.05;
@@ -53,6 +53,7 @@ struct Drive {
   }
   void resetCounts() { brake_engagements = brake_releases = 0; }
   Harness& h;
+  double left_push = 0.0;  ///< [N m] added to the left wheel's torque (a controller correcting)
   double next = 0.0;
   bool was_braked = true;
   int brake_engagements = 0, brake_releases = 0;
@@ -276,6 +277,9 @@ TEST_F(CommandPathTest, AFrozenEncoderEndsTheDriveWithinTheCheckAngle) {
   const double rate = h.plant.rightRate();
   ASSERT_GT(rate, 2.0) << "the wheels should turn fast enough for the angle to matter";
   h.controller.freezeEncoders(true, false);
+  // The chair's controller, seeing the left wheel stand, pushes it hard (36 N m within 0.09 s
+  // in the frozen_encoder system test); a wheel standing under a light torque is a pivot.
+  drive.left_push = 25.0;
   const double t0 = h.now, right0 = h.plant.wheelAngles().right;
   double latched_at = -1, right_turned = 0.0;
   drive.run(1.0, 2.0, [&] {

@@ -39,7 +39,8 @@ TEST(WheelMotionCheck, AFrozenLeftEncoderIsFoundWithinTheCheckAngleOfTheOtherWhe
   WheelMotionCheck check(config());
   const double rate = 4.0;  // [rad/s] 0.68 m/s
   const Outcome r = run(check, 1.0, [&](double t) {
-    return std::make_pair(WheelState{5.0, 0.0, 0.0}, WheelState{5.0, rate * t, rate});
+    // The controller, seeing the left wheel stand, pushes it (36 N m in the system test).
+    return std::make_pair(WheelState{30.0, 0.0, 0.0}, WheelState{5.0, rate * t, rate});
   });
   ASSERT_EQ(r.verdict.fault, WheelFault::kFrozenEncoder) << r.verdict.detail;
   EXPECT_LE(rate * r.at, config().encoder_check_angle + rate * 0.01);
@@ -107,6 +108,25 @@ TEST(WheelMotionCheck, ASlowTurnAboutAStandingInnerWheelIsNoFault) {
     return std::make_pair(WheelState{2.0, 0.0, 0.0}, WheelState{6.0, 0.64 * t, 0.64});
   });
   EXPECT_EQ(r.verdict.fault, WheelFault::kNone) << r.verdict.detail;
+}
+
+TEST(WheelMotionCheck, AFastTurnAboutAStandingWheelUnderALightTorqueIsNoFault) {
+  // Seen in the navigation_person system test (CI): the left wheel stood 0.14 s while the right
+  // turned 0.26 rad (1.9 rad/s) on the way round a person; the left motor was not pushing it.
+  WheelMotionCheck check(config());
+  const Outcome r = run(check, 1.0, [&](double t) {
+    return std::make_pair(WheelState{4.0, 0.0, 0.0}, WheelState{6.0, 1.9 * t, 1.9});
+  });
+  EXPECT_EQ(r.verdict.fault, WheelFault::kNone) << r.verdict.detail;
+}
+
+TEST(WheelMotionCheck, TheFrozenEncoderReportSaysHowHardTheMotorPushed) {
+  WheelMotionCheck check(config());
+  const Outcome r = run(check, 1.0, [&](double t) {
+    return std::make_pair(WheelState{30.0, 0.0, 0.0}, WheelState{-10.0, 4.0 * t, 4.0});
+  });
+  ASSERT_EQ(r.verdict.fault, WheelFault::kFrozenEncoder) << r.verdict.detail;
+  EXPECT_NE(r.verdict.detail.find("its torque 30.0 N m"), std::string::npos) << r.verdict.detail;
 }
 
 }  // namespace

@@ -44,6 +44,11 @@ struct DriverConfig {
   /// (at 0.7 m/s about 0.05 s and 4 cm of travel: a bounded distance, not only a time, whatever
   /// the speed; a slow turn about a standing inner wheel is no fault).
   double encoder_check_angle = 0.25;
+  /// [N m] ... both only while that wheel's motor pushes it at least this hard (either sign): a
+  /// drive needs < 6 N m per wheel (rolling resistance 1.7, 0.35 m/s^2 of the chair's mass 4.1),
+  /// so a wheel standing under less is the chair turning about it, not a failed encoder; with a
+  /// frozen encoder the controller pushes the standing wheel far harder at once.
+  double encoder_check_torque = 12.0;
   /// [N m] a wheel commanded at least this torque (either sign) that does not count for
   /// stall_time [s] (both encoders dead, a motor or gearbox disconnected, a blocked wheel), or
   /// that turns faster than encoder_check_rate against it and speeds up (an encoder wired
@@ -59,6 +64,7 @@ struct DriverConfig {
 /// Keys: counts_per_rev, max_wheel_rate, max_torque, max_speed, command_rate [Hz]
 /// (1 / command_period), command_timeout, controller_timeout, permit_timeout, stop_window,
 /// controller_wall_timeout, encoder_check_time, encoder_check_rate, encoder_check_angle,
+/// encoder_check_torque,
 /// stall_torque, stall_time. The wheel radius and half
 /// track are not keys: they are the chair file's.
 void readDriverConfig(wheelchair_core::ConfigReader& reader, DriverConfig& config);

@@ -1,7 +1,9 @@
 // Does each wheel move as its motor is told? ROS-free, time injected. While torque drives the
 // chair (the caller resets it otherwise), a wheel has failed when
-//  - its encoder does not count while the other wheel turns faster than encoder_check_rate for
-//    encoder_check_time, or turns encoder_check_angle (a frozen encoder: a bounded distance);
+//  - its encoder does not count while its motor pushes it (|torque| >= encoder_check_torque)
+//    and the other wheel turns faster than encoder_check_rate for encoder_check_time, or turns
+//    encoder_check_angle (a frozen encoder: a bounded distance); standing under a light torque
+//    while the other turns is the chair turning about that wheel;
 //  - it is commanded |torque| >= stall_torque for stall_time and does not count (both encoders
 //    dead, a motor or gearbox disconnected, a blocked wheel);
 //  - it turns faster than encoder_check_rate against a commanded |torque| >= stall_torque for
@@ -53,6 +55,7 @@ class WheelMotionCheck {
     double pushed_since = NAN;    ///< [s] |torque| >= stall_torque since
     double against_since = NAN;   ///< [s] turning against |torque| >= stall_torque since
     double against_rate = 0.0;    ///< |rate| then
+    double max_torque = 0.0;      ///< [N m] the largest |torque| since its last count
   };
   WheelVerdict checkWheel(const char* name, Wheel& wheel, const WheelState& state,
                           const WheelState& other, double now, bool counting);
