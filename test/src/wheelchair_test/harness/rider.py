@@ -27,6 +27,32 @@ class RiderError(RuntimeError):
     """What the rider waited for did not happen; the message says what it saw."""
 
 
+def call(name, service_type, *args, wall_timeout=20.0):
+    """Calls service `name` and returns its response; raises RiderError when it is not up or
+    does not answer within `wall_timeout` wall seconds (a rospy call alone can wait for ever,
+    and a test killed by its time limit reports nothing of what it saw)."""
+    try:
+        rospy.wait_for_service(name, timeout=wall_timeout)
+    except rospy.ROSException:
+        raise RiderError(f"service {name} is not up after {wall_timeout:.0f} s") from None
+    result = {}
+
+    def run():
+        try:
+            result["response"] = rospy.ServiceProxy(name, service_type)(*args)
+        except Exception as error:  # raised again in the caller's thread
+            result["error"] = error
+
+    worker = threading.Thread(target=run, daemon=True)
+    worker.start()
+    worker.join(wall_timeout)
+    if worker.is_alive():
+        raise RiderError(f"service {name} did not answer within {wall_timeout:.0f} s")
+    if "error" in result:
+        raise result["error"]
+    return result["response"]
+
+
 def yaw_of(q):
     return 2.0 * math.atan2(q.z, q.w)
 
@@ -210,7 +236,7 @@ class Rider:
 
     def go_to_place(self, name):
         """The named place through the HMI's service; returns (accepted, message)."""
-        response = rospy.ServiceProxy("/go_to_place", GoToPlace)(name)
+        response = call("/go_to_place", GoToPlace, name)
         return response.accepted, response.message
 
     def send_goal(self, x, y, yaw):
@@ -256,7 +282,7 @@ class Rider:
     def add_obstacle(self, x, y, radius=0.15, appear_time=0.0):
         from wheelchair_sim.srv import AddObstacle
 
-        return rospy.ServiceProxy("/sim/add_obstacle", AddObstacle)(x, y, radius, appear_time)
+        return call("/sim/add_obstacle", AddObstacle, x, y, radius, appear_time)
 
     def stops_for_person(self, test, person, radius, front_offset=0.30, rest_wall_timeout=60.0):
         """A person (a disc of `radius` at `person` = (x, y)) appears now; fails `test` unless
@@ -282,7 +308,7 @@ class Rider:
     def teleport(self, x, y, yaw):
         from wheelchair_sim.srv import SetPose
 
-        return rospy.ServiceProxy("/sim/teleport", SetPose)(x, y, yaw)
+        return call("/sim/teleport", SetPose, x, y, yaw)
 
     # ---- questions: `since` is a Mark (exact) or a simulated time [s] ---------------------------
     def mark(self):
