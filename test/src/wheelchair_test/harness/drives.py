@@ -148,7 +148,10 @@ class Drive:
         self.id = client.gh.comm_state_machine.action_goal.goal_id.id
 
     def done(self):
-        return self.client.get_state() in TERMINAL
+        """Ended, and its result received: the goal's status can say REJECTED before the
+        result message arrives (get_result() is None until then)."""
+        return (self.client.get_state() in TERMINAL
+                and self.client.simple_state == actionlib.SimpleGoalState.DONE)
 
     def wait(self, wall_timeout):
         """True once the drive ended within `wall_timeout` wall seconds."""
