@@ -44,6 +44,12 @@ void KldLocalizer::resetRecovery() {
   recovering_ = false;
 }
 
+double inlierShare(const MeasurementModel::FitCounts& fit, double max_short_share) {
+  const int excused = std::min(fit.shorts, static_cast<int>(max_short_share * fit.echoes));
+  const int counted = fit.echoes - excused;
+  return counted > 0 ? static_cast<double>(fit.inliers) / counted : 0.0;
+}
+
 double KldLocalizer::meanFit() const {
   if (fit_window_.empty()) return 1.0;
   double sum = 0;
@@ -151,7 +157,7 @@ UpdateResult KldLocalizer::update(const wheelchair_core::Pose2D& odom_pose,
     estimate_.mean = {peak.x, peak.y, peak.phi};
   }
   fit_ = fit_model_.fitCounts(toMrpt(estimate_.mean), params_.inlier_tolerance);
-  inliers_ = fit_.echoes > 0 ? static_cast<double>(fit_.inliers) / fit_.echoes : 0.0;
+  inliers_ = inlierShare(fit_, params_.fit_max_short_share);
   const int relocalizations_before = relocalizations_;
   checkFit();
   if (recovering_ && relocalizations_ == relocalizations_before && status().localized())

@@ -64,6 +64,7 @@ std::string KldParams::validate() const {
       .check(fit_window >= 1, "fit_window must be at least 1")
       .inRange("fit_min_mean", fit_min_mean, 0.0, 1.0)
       .check(fit_beam_step >= 1, "fit_beam_step must be at least 1")
+      .inRange("fit_max_short_share", fit_max_short_share, 0.0, 1.0)
       .inRange("relocalize_max_fit", relocalize_max_fit, 0.0, 1.0)
       .check(relocalize_min_echoes >= 1, "relocalize_min_echoes must be at least 1")
       .check(relocalize_updates >= 0, "relocalize_updates must not be negative (0: off)")
@@ -106,6 +107,7 @@ void readKldParams(wheelchair_core::ConfigReader& r, KldParams& p) {
   r.read("inlier_tolerance", p.inlier_tolerance);
   r.read("fit_window", p.fit_window);
   r.read("fit_min_mean", p.fit_min_mean);
+  r.read("fit_max_short_share", p.fit_max_short_share);
   r.read("fit_beam_step", p.fit_beam_step);
   r.read("relocalize_max_fit", p.relocalize_max_fit);
   r.read("relocalize_min_echoes", p.relocalize_min_echoes);

@@ -91,6 +91,8 @@ double MeasurementModel::inlierFraction(const mrpt::math::TPose2D& pose, double 
 MeasurementModel::FitCounts MeasurementModel::fitCounts(const mrpt::math::TPose2D& pose,
                                                         double tolerance) const {
   const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+  const double ox = pose.x + c * sensor_pose_.x - s * sensor_pose_.y;
+  const double oy = pose.y + s * sensor_pose_.x + c * sensor_pose_.y;
   FitCounts f;
   for (const Beam& b : beams_) {
     if (b.max_range) continue;
@@ -98,10 +100,13 @@ MeasurementModel::FitCounts MeasurementModel::fitCounts(const mrpt::math::TPose2
     const int cell =
         map_.cellIndex(pose.x + c * b.end_x - s * b.end_y, pose.y + s * b.end_x + c * b.end_y);
     if (cell < 0) continue;
-    if (map_.obstacleDistance()[cell] <= tolerance)
+    if (map_.obstacleDistance()[cell] <= tolerance) {
       ++f.inliers;
-    else if (map_.isFree(cell))
+    } else if (map_.isFree(cell)) {
       ++f.contradictions;
+      if (b.range < map_.castRay(ox, oy, pose.phi + b.angle, params_.max_range) - tolerance)
+        ++f.shorts;
+    }
   }
   return f;
 }

@@ -1,5 +1,6 @@
 // Distance transform against brute force; both measurement models prefer the true pose.
 #include <gtest/gtest.h>
+#include <wheelchair_kld/kld_localizer.h>
 #include <wheelchair_kld/likelihood_peak.h>
 #include <wheelchair_kld/measurement_model.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
@@ -108,3 +109,30 @@ TEST(LikelihoodPeak, SearchFromAnOffsetPoseEndsAtTheTruePoseWithinItsBounds) {
 INSTANTIATE_TEST_SUITE_P(Models, MeasurementModelTest,
                          ::testing::Values(MeasurementModelType::kLikelihoodField,
                                            MeasurementModelType::kBeam));
+
+// Issue 22: a 0.4 m box the map lacks, 1 m in front of the chair, gives short returns (echoes in
+// mapped free space before the map's wall); left out of the inlier share, the true pose fits as
+// well as without the box, while a pose 0.3 m off still fits poorly.
+TEST(MeasurementModel, ShortReturnsOfAnUnmappedBoxDoNotMakeTheTruePoseAPoorFit) {
+  const auto grid = loadWorldGrid(WORLDS_DIR "/office.yaml");
+  const LocalizationMap map(grid, 2.0);
+  auto with_box = grid;
+  const TPose2D truth(5.0, 11.0, 0.2);
+  const double bx = truth.x + std::cos(truth.phi), by = truth.y + std::sin(truth.phi);
+  for (double x = bx - 0.2; x <= bx + 0.2; x += 0.02)
+    for (double y = by - 0.2; y <= by + 0.2; y += 0.02) with_box.setPos(x, y, 0.0f);
+  MeasurementParams p;
+  p.beam_step = 1;
+  MeasurementModel model(map, p);
+  const DriveParams drive;
+  model.setScan(test::simulateScan(with_box, {truth.x, truth.y, truth.phi}, drive, 11),
+                drive.sensor_pose);
+  const auto fit = model.fitCounts(truth, 0.15);
+  EXPECT_GT(fit.shorts, 0.05 * fit.echoes) << fit.echoes;
+  EXPECT_LE(fit.shorts, fit.contradictions);
+  EXPECT_LT(inlierShare(fit, 0.0), 0.95);
+  EXPECT_GT(inlierShare(fit, 0.3), 0.95);
+  EXPECT_GT(inlierShare(fit, 0.3), inlierShare(fit, 0.0));
+  const auto off = model.fitCounts(TPose2D(5.3, 11.0, 0.2), 0.15);
+  EXPECT_LT(inlierShare(off, 0.3), 0.7);
+}

@@ -25,6 +25,11 @@ namespace wheelchair_kld {
 
 enum class UpdateResult { kUpdated, kNoMotion, kRejected, kNotInitialized };
 
+/// Share of the echoes that end within the tolerance of a mapped obstacle, the short returns
+/// (up to `max_short_share` of the echoes) left out: echoes of something the map lacks are no
+/// sign of a wrong pose.
+double inlierShare(const MeasurementModel::FitCounts& fit, double max_short_share);
+
 class KldLocalizer {
  public:
   /// `seed` drives every random draw: equal seeds and inputs give equal results.

@@ -110,6 +110,11 @@ struct KldParams {
   /// since the likelihood's every 6th beam leaves 30 echoes of a 180-beam scan, whose share
   /// swings by 0.1-0.2 from scan to scan on a correct track (Intel).
   int fit_beam_step = 1;
+  /// Short returns (an echo in mapped free space before the map's first obstacle along its beam:
+  /// something the map lacks, a box or a person beside the chair) are left out of the inlier
+  /// share, up to this share of the echoes; more than that counts as a poor fit (a wrong pose
+  /// gives short and long returns). 0: every echo counts (before issue 22).
+  double fit_max_short_share = 0.3;
   /// MISFIT status (not a re-localization) while the mean inlier share of the last fit_window
   /// updates is below fit_min_mean. A second cluster must fit at least fit_min_mean to be a
   /// genuine alternative (hypothesis_min_weight).

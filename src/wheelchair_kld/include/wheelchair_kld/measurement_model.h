@@ -35,6 +35,10 @@ class MeasurementModel {
   /// in unknown space / off the map (no evidence either way).
   struct FitCounts {
     int echoes = 0, inliers = 0, contradictions = 0;
+    /// Of the contradictions, the short returns: the echo ends in mapped free space before the
+    /// map's first obstacle along its beam (by more than the tolerance). Something the map lacks
+    /// stands there (a box, a person: amcl's z_short); a wrong pose gives long returns too.
+    int shorts = 0;
     /// inliers / (inliers + contradictions): how well the scan fits where the map knows (1
     /// without such echoes).
     double knownFit() const {
