@@ -575,7 +575,7 @@ void Navigator::enterBlocked(const std::string& why, double now) {
       ++d.back_ups;
       d.notes.push_back("backed up");
       d.backing_up = true;
-      drive(std::move(reverse), RouteKind::kAround, now);
+      drive(std::move(reverse), RouteKind::kBackUp, now);
     }
   }
 }

@@ -71,7 +71,7 @@ std::string riderSentence(Reason reason, const SentenceContext& context);
 
 /// Which route the chair drives: the first one, the same way again after a wait, or
 /// another way round something in the way.
-enum class RouteKind { kFirst, kResumed, kAround };
+enum class RouteKind { kFirst, kResumed, kAround, kBackUp };
 
 /// The rider's sentence while in `state` (kDriving: on a route of `kind`).
 std::string stateSentence(State state, const SentenceContext& context,
