@@ -15,7 +15,8 @@ the demo brings them up), one case per rostest (~case):
 - corrupt_frames: 1 s of random torque-command frames on the motor bus mid-drive (17
   brake/release cycles, a jolt): one controlled stop, latched, told.
 - foreign_switch / foreign_go_to: after a latched stop another node presses /switch through a
-  whole choice, or names a place on /hmi/go_to (a choice releases the stop and drives): refused
+  whole choice, or names a place on /hmi/go_to and calls go_to_place (a choice releases the
+  stop and drives; the service's foreign call is a goal without release): refused
   and reported, nothing moves; the one expected publisher (/switch_keyboard, /display: played
   by `rostopic pub __name:=...`) is heard.
 - foreign_speed_limit: mid-drive another node publishes /safety/speed_limit (a crawl, then a
@@ -273,6 +274,9 @@ class CommandPath(unittest.TestCase):
         time.sleep(1.0)  # connections
         foreign = rospy.get_time()
         pub.publish(String(GOAL))
+        # The go_to_place service from a node other than the rider's display (this one): a goal
+        # like rviz's, which never releases the stop.
+        s.go_to_place(GOAL)
         s.sim_sleep(4.0)
         travel = s.travelled(foreign)
         self.assertLess(travel, 0.03, "another node's choice drove the chair: " + s.describe(since))
@@ -280,6 +284,8 @@ class CommandPath(unittest.TestCase):
         self.assertTrue(last.stop, "the stop was lifted: " + describe_stop(last))
         self.assertTrue(s.wait(lambda: self.reported("/hmi/go_to", me, "refused"), 10.0),
                         "the foreign choice was not reported: %s" % self.errors[-5:])
+        self.assertTrue(s.wait(lambda: self.reported("go_to_place", me, "refused"), 10.0),
+                        "the foreign go_to_place was not reported: %s" % self.errors[-5:])
         # Its one publisher (the rider's display) is heard: the chair drives again.
         go = s.mark()
         publish_as("display", "/hmi/go_to", "std_msgs/String", GOAL)

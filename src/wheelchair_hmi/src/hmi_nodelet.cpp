@@ -16,6 +16,7 @@
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_msgs/NavigateAction.h>
 #include <wheelchair_msgs/NavigatorState.h>
+#include <wheelchair_msgs/SafetyStatus.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/drive_channel.h>
 #include <wheelchair_ros/expected_publisher.h>
@@ -50,6 +51,10 @@ struct HmiNodeletConfig {
   /// releases a latched stop and drives): any other publisher is refused and reported.
   std::string switch_publisher = "/switch_keyboard";
   std::string go_to_publisher = "/display";
+  /// The one node whose go_to_place calls are the rider's: they release a latched stop. Any
+  /// other caller (a script, rosservice, a misconfigured node) gets a drive like an rviz goal
+  /// when nothing is stopped, but never a release: with a stop latched it is refused, reported.
+  std::string go_to_caller = "/display";
 
   std::string validate() const {
     const std::string scanner_problem = scanner.validate();
@@ -57,10 +62,13 @@ struct HmiNodeletConfig {
         wheelchair_ros::publisherNameProblem("switch_publisher", switch_publisher);
     const std::string go_to_problem =
         wheelchair_ros::publisherNameProblem("go_to_publisher", go_to_publisher);
+    const std::string caller_problem =
+        wheelchair_ros::publisherNameProblem("go_to_caller", go_to_caller);
     wheelchair_core::ConfigChecks checks;
     checks.check(scanner_problem.empty(), scanner_problem)
         .check(switch_problem.empty(), switch_problem)
         .check(go_to_problem.empty(), go_to_problem)
+        .check(caller_problem.empty(), caller_problem)
         .check(!map_frame.empty(), "map_frame must not be empty")
         .check(!navigator_action.empty(), "navigator_action must name the navigator's action");
     return checks.result();
@@ -79,6 +87,7 @@ void readHmiNodeletConfig(wheelchair_core::ConfigReader& reader, HmiNodeletConfi
   reader.read("localization_status", config.localization_status);
   reader.read("switch_publisher", config.switch_publisher);
   reader.read("go_to_publisher", config.go_to_publisher);
+  reader.read("go_to_caller", config.go_to_caller);
 }
 
 class HmiNodelet : public nodelet::Nodelet {
@@ -88,6 +97,7 @@ class HmiNodelet : public nodelet::Nodelet {
   struct ClientCommand {
     std::optional<wheelchair_msgs::NavigateGoal> goal;
     bool cancel = false;
+    bool release = true;  ///< the goal is the rider's command: it releases a latched stop
   };
 
   void onInit() override {
@@ -115,7 +125,9 @@ class HmiNodelet : public nodelet::Nodelet {
     switch_sub_ = nh.subscribe("switch", 10, &HmiNodelet::onSwitch, this);
     go_to_sub_ = nh.subscribe("hmi/go_to", 1, &HmiNodelet::onGoTo, this);
     finished_sub_ = nh.subscribe("hmi/finished", 1, &HmiNodelet::onFinished, this);
-    go_to_srv_ = nh.advertiseService("go_to_place", &HmiNodelet::onGoToService, this);
+    go_to_caller_ = config.go_to_caller;
+    go_to_srv_ = nh.advertiseService("go_to_place", &HmiNodelet::onGoToPlaceCall, this);
+    safety_sub_ = nh.subscribe("safety/status", 1, &HmiNodelet::onSafety, this);
     state_sub_ = nh.subscribe(config.navigator_state, 5, &HmiNodelet::onNavigatorState, this);
     localization_sub_ =
         nh.subscribe(config.localization_status, 5, &HmiNodelet::onLocalization, this);
@@ -136,6 +148,7 @@ class HmiNodelet : public nodelet::Nodelet {
       if (waiting_goal_ && !command.goal && !command.cancel) {
         if (client_->isServerConnected()) {
           command.goal = waiting_goal_;
+          command.release = waiting_release_;
         } else if ((ros::WallTime::now() - waiting_since_).toSec() > kConnectTimeout) {
           NODELET_WARN("[switch] the navigator's action server is not connected");
           waiting_goal_.reset();
@@ -205,8 +218,41 @@ class HmiNodelet : public nodelet::Nodelet {
     onGoToService(request, response);
   }
 
-  bool onGoToService(wheelchair_msgs::GoToPlace::Request& request,
-                     wheelchair_msgs::GoToPlace::Response& response) {
+  /// The go_to_place service: the rider's (go_to_caller's) call releases a latched stop; any
+  /// other caller's is a goal like rviz's, which never releases a stop (with a stop in effect
+  /// it moves nothing and is reported). The caller's name is its own word (ROS 1 has no
+  /// authentication): this guards against mistakes of nodes inside the chair's trust domain.
+  bool onGoToPlaceCall(ros::ServiceEvent<wheelchair_msgs::GoToPlace::Request,
+                                         wheelchair_msgs::GoToPlace::Response>& event) {
+    const std::string caller = event.getCallerName();
+    const std::string rider = go_to_caller_.empty() ? ros::this_node::getName() : go_to_caller_;
+    if (caller == rider) return onGoToService(event.getRequest(), event.getResponse());
+    bool stopped;
+    unsigned long long count;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stopped = safety_stop_;
+      count = ++foreign_go_to_;
+    }
+    if (stopped)
+      NODELET_ERROR("go_to_place from %s refused to release the stop: only %s (the rider's "
+                    "display) may (%llu foreign calls so far)",
+                    caller.c_str(), rider.c_str(), count);
+    else
+      NODELET_WARN("go_to_place from %s (not the rider's display %s): a goal, no release",
+                   caller.c_str(), rider.c_str());
+    return onGoToService(event.getRequest(), event.getResponse(), false);
+  }
+
+  /// The supervisor's verdict (for the report of a foreign go_to_place only: the release is
+  /// the channel's, and a spoofed status releases nothing).
+  void onSafety(const wheelchair_msgs::SafetyStatus::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    safety_stop_ = msg->stop;
+  }
+
+  bool onGoToService(const wheelchair_msgs::GoToPlace::Request& request,
+                     wheelchair_msgs::GoToPlace::Response& response, bool rider = true) {
     ClientCommand command;
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -219,6 +265,7 @@ class HmiNodelet : public nodelet::Nodelet {
         scanner_->driving(ros::Time::now().toSec());
         goal_place_ = place->name;
         command.goal = goalFor(*place);
+        command.release = rider;
         publishState();
       }
     }
@@ -237,6 +284,7 @@ class HmiNodelet : public nodelet::Nodelet {
     if (!client_->isServerConnected()) {
       std::lock_guard<std::mutex> lock(mutex_);
       waiting_goal_ = command.goal;
+      waiting_release_ = command.release;
       waiting_since_ = ros::WallTime::now();
       return;
     }
@@ -250,7 +298,8 @@ class HmiNodelet : public nodelet::Nodelet {
     }
     // The rider's destination is their command to go on: it releases a latched stop of the
     // supervisor and the base driver in this process (the only release there is).
-    if (!wheelchair_ros::releaseStopByRider("hmi: go to " + command.goal->place))
+    if (command.release &&
+        !wheelchair_ros::releaseStopByRider("hmi: go to " + command.goal->place))
       NODELET_WARN_ONCE(
           "hmi: no supervisor or base driver in this process: a latched stop "
           "cannot be released from here");
@@ -426,6 +475,7 @@ class HmiNodelet : public nodelet::Nodelet {
   ros::Subscriber switch_sub_, go_to_sub_, finished_sub_, state_sub_, localization_sub_;
   std::unique_ptr<wheelchair_ros::ExpectedPublisher> switch_guard_, go_to_guard_;
   std::optional<wheelchair_msgs::NavigateGoal> waiting_goal_;  ///< for the server to be seen
+  bool waiting_release_ = true;
   ros::WallTime waiting_since_;
   static constexpr double kConnectTimeout = 5.0;  ///< [s] wall
   int goal_count_ = 0;
@@ -441,6 +491,10 @@ class HmiNodelet : public nodelet::Nodelet {
   std::string goal_place_;     ///< the place the chair drives to ("" for a spot)
   std::string last_sentence_;  ///< the last announcement
   ros::ServiceServer go_to_srv_;
+  ros::Subscriber safety_sub_;
+  std::string go_to_caller_;
+  bool safety_stop_ = false;  ///< the supervisor's last verdict (mutex_)
+  unsigned long long foreign_go_to_ = 0;
   ros::Timer timer_;
 };
 
