@@ -136,6 +136,9 @@ def run_protocol(args, out, logs):
                 record = {"index": pair["index"], "name": pair["name"], "via": pair["via"],
                           "start": list(pair["start"]), "goal": list(pair["goal"]),
                           "outcome": f"error: {e}"}
+            if record.get("released_before_run"):
+                print(f"  the rider released the earlier run's stop through the HMI: "
+                      f"{record['released_before_run']}", flush=True)
             print(f"run {pair['index']:2d} {pair['name']:26s} {record['outcome']:14s} "
                   f"MSErc {record.get('mse_rc_cm2', math.nan):6.2f}  "
                   f"MSEre {record.get('mse_re_cm2', math.nan):6.2f} cm2  goal "

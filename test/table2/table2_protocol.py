@@ -18,7 +18,10 @@ from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import PoseStamped, PoseWithCovarianceStamped
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from nav_msgs.msg import Odometry, Path
+from actionlib_msgs.msg import GoalID, GoalStatusArray
 from std_msgs.msg import Bool, String
+from wheelchair_msgs.msg import SafetyStatus
+from wheelchair_msgs.srv import GoToPlace
 from wheelchair_sim.srv import SetPose
 
 import table2_metrics as metrics
@@ -29,6 +32,14 @@ WORLDS = os.path.join(HERE, "..", "worlds")
 
 def yaw_of(q):
     return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+
+
+def load_places(path=os.path.join(HERE, "flat_pairs.yaml")):
+    """{name: (x, y, yaw)} of the world's named places (the rider's destinations)."""
+    with open(path) as f:
+        spec = yaml.safe_load(f)
+    with open(os.path.join(WORLDS, spec["places"])) as f:
+        return {p["name"]: (p["x"], p["y"], p["yaw"]) for p in yaml.safe_load(f)["places"]}
 
 
 def load_pairs(path=os.path.join(HERE, "flat_pairs.yaml")):
@@ -93,6 +104,16 @@ class Table2Runner:
         self.goal_pub = rospy.Publisher("/move_base_simple/goal", PoseStamped, queue_size=1)
         self.last_truth = None
         self.check_processes = lambda: None  # raises when the chair or simulator died
+        # The supervisor's stop latches until the rider's own command (a destination through
+        # the HMI): a run that ended in one would otherwise end every later run too.
+        self.safety = None  # the supervisor's last SafetyStatus
+        self.navigate_goals = []  # GoalStatus of the navigator's `navigate` action (the HMI's)
+        self.releases = []  # (before run index, the stop released)
+        self.places = load_places()
+        rospy.Subscriber("/safety/status", SafetyStatus, self._on_safety, queue_size=5)
+        rospy.Subscriber("/navigate/status", GoalStatusArray, self._on_navigate_status,
+                         queue_size=5)
+        self.navigate_cancel = rospy.Publisher("/navigate/cancel", GoalID, queue_size=1)
 
     # -- callbacks --------------------------------------------------------------------------
     def _on_plan(self, msg):
@@ -121,6 +142,14 @@ class Table2Runner:
     def _on_status(self, msg):
         with self.lock:
             self.status.append((rospy.Time.now().to_sec(), msg.data))
+
+    def _on_safety(self, msg):
+        with self.lock:
+            self.safety = msg
+
+    def _on_navigate_status(self, msg):
+        with self.lock:
+            self.navigate_goals = list(msg.status_list)
 
     def _on_collision(self, msg):
         with self.lock:
@@ -176,12 +205,62 @@ class Table2Runner:
         self.init_pub.publish(msg)
         self.sim_sleep(1.5)  # scans into the freshly initialized filter
 
+    def latched_stop(self):
+        """The supervisor's stop that holds until the rider's command (None when it allows
+        motion or waits for its first data)."""
+        with self.lock:
+            s = self.safety
+        if s is None or not s.stop or s.reason == SafetyStatus.NO_DATA:
+            return None
+        return s
+
+    def release_by_rider(self, wall_timeout=30.0):
+        """Releases a latched stop the way the rider does: a destination through the HMI (its
+        go_to_place service; the HMI is the only release of the supervisor's and the base
+        driver's latch), here the named place nearest the chair; that drive is canceled as soon
+        as the navigator has it and the chair is let come to rest. Returns the stop's text, or
+        None when nothing was latched."""
+        stop = self.latched_stop()
+        if stop is None:
+            return None
+        text = "%s (%s)" % (stop.sentence, stop.detail)
+        with self.lock:
+            _, x, y = self.last_truth[:3]
+            seen = {g.goal_id.id for g in self.navigate_goals}
+        place = min(self.places, key=lambda n: math.hypot(self.places[n][0] - x,
+                                                           self.places[n][1] - y))
+        rospy.wait_for_service("/go_to_place", timeout=wall_timeout * self.wall_scale)
+        answer = rospy.ServiceProxy("/go_to_place", GoToPlace)(place)
+        if not answer.accepted:
+            raise RuntimeError("the HMI refused the rider's release (go to %s): %s" %
+                               (place, answer.message))
+        try:
+            self.wait_for("the HMI's drive at the navigator", lambda: any(
+                g.goal_id.id not in seen for g in self.navigate_goals), wall_timeout)
+        finally:
+            self.navigate_cancel.publish(GoalID())  # every navigate goal: the HMI's drive ends
+        # (wait_for holds self.lock while it asks) a stop whose cause holds on latches again:
+        # this run then fails on its own
+        try:
+            self.wait_for("the supervisor's release", lambda: not self.safety.stop
+                          or self.safety.reason == SafetyStatus.NO_DATA, 10.0)
+        except RuntimeError:
+            pass
+        self.sim_sleep(1.0)
+        return text
+
     def run_pair(self, pair, sim_timeout=None):
-        """Drives one pair; returns the per-run record (dict, JSON-ready)."""
+        """Drives one pair; returns the per-run record (dict, JSON-ready). A stop the
+        supervisor latched in an earlier run is first released by the rider (release_by_rider):
+        it failed that run; this run starts as a rider's next drive does."""
         record = {"index": pair["index"], "name": pair["name"], "via": pair["via"],
                   "start": list(pair["start"]), "goal": list(pair["goal"])}
         wall0 = time.time()
-        self.put_at_start(pair["start"])
+        self.put_at_start(pair["start"])  # localized at the start: a lost pose is no cause
+        released = self.release_by_rider()
+        if released:
+            record["released_before_run"] = released
+            self.releases.append((pair["index"], released))
         with self.lock:
             self.truth, self.estimates, self.status = [], [], []
             self.collided = False
