@@ -15,7 +15,6 @@
 #include <wheelchair_msgs/NavigateAction.h>
 #include <wheelchair_msgs/NavigatorState.h>
 #include <wheelchair_msgs/SafetyStatus.h>
-#include <wheelchair_navigator/back_up.h>
 #include <wheelchair_navigator/navigator.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/drive_channel.h>
@@ -149,8 +148,10 @@ class NavigatorNodelet : public nodelet::Nodelet {
     std::vector<NamedPoint> named;
     for (const auto& p : places_) named.push_back({p.name, p.pose.position()});
     navigator_->setPlaces(named);
-    // Issue 24: blocked in a dead end, back out along the way the chair came (back_up.h).
-    navigator_->setBackUpHook([this](const BlockedSituation& s) { return trail_.route(s); });
+    // Issue 24's back-up recovery (back_up.h, BackUpTrail) is not set here yet: as written it
+    // backs out on every block, also where backing cannot help (the only doorway blocked:
+    // navigation_blocked backed 2 m, then said blocked; a person who would step aside). It
+    // needs a route from the trail's end that the chair's own pose lacks, and its rostest.
     tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
 
     path_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
@@ -325,7 +326,6 @@ class NavigatorNodelet : public nodelet::Nodelet {
     }
     std::lock_guard<std::mutex> lock(mutex_);
     const double now = ros::Time::now().toSec();
-    if (pose) trail_.record(*pose);
     if (pose) handle(navigator_->onPose(*pose, now));
     handle(navigator_->tick(now));
     // A screen's distance to go: a few times a second while driving.
@@ -533,7 +533,6 @@ class NavigatorNodelet : public nodelet::Nodelet {
 
   std::mutex mutex_;  ///< the core and what it publishes
   std::unique_ptr<Navigator> navigator_;
-  BackUpTrail trail_;  ///< the way the chair came (under mutex_, like navigator_)
   ros::Time last_path_stamp_;
   std::map<ros::Time, int> path_ids_;  ///< route stamp -> the core's route id
   double last_state_publish_ = 0.0;
