@@ -235,9 +235,10 @@ class HmiNodelet : public nodelet::Nodelet {
       count = ++foreign_go_to_;
     }
     if (stopped)
-      NODELET_ERROR("go_to_place from %s refused to release the stop: only %s (the rider's "
-                    "display) may (%llu foreign calls so far)",
-                    caller.c_str(), rider.c_str(), count);
+      NODELET_ERROR(
+          "go_to_place from %s refused to release the stop: only %s (the rider's "
+          "display) may (%llu foreign calls so far)",
+          caller.c_str(), rider.c_str(), count);
     else
       NODELET_WARN("go_to_place from %s (not the rider's display %s): a goal, no release",
                    caller.c_str(), rider.c_str());
@@ -298,8 +299,7 @@ class HmiNodelet : public nodelet::Nodelet {
     }
     // The rider's destination is their command to go on: it releases a latched stop of the
     // supervisor and the base driver in this process (the only release there is).
-    if (command.release &&
-        !wheelchair_ros::releaseStopByRider("hmi: go to " + command.goal->place))
+    if (command.release && !wheelchair_ros::releaseStopByRider("hmi: go to " + command.goal->place))
       NODELET_WARN_ONCE(
           "hmi: no supervisor or base driver in this process: a latched stop "
           "cannot be released from here");

@@ -4,9 +4,18 @@
 // time; with a reference (a corrected log of the same drive, matched by identical readings or by
 // stamp) and/or a relations file, prints the error table (position / heading RMS, mean, max;
 // Kuemmerle relation error) and the re-localizations. A progress bar on a terminal.
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPosePDFParticles.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <mrpt/slam/CMonteCarloLocalization2D.h>
 #include <wheelchair_core/config.h>
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_kld/kld_localizer.h>
+#include <wheelchair_kld/odometry_motion_model.h>
 #include <wheelchair_kld/reference_fit.h>
 #include <wheelchair_logs/bag_scans.h>
 #include <wheelchair_logs/carmen_log.h>
@@ -16,15 +25,6 @@
 #include <wheelchair_logs/splice.h>
 #include <wheelchair_logs/trajectory_plot.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
-#include <mrpt/bayes/CParticleFilter.h>
-#include <mrpt/obs/CActionCollection.h>
-#include <mrpt/obs/CActionRobotMovement2D.h>
-#include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt/obs/CSensoryFrame.h>
-#include <mrpt/poses/CPosePDFParticles.h>
-#include <mrpt/random/RandomGenerators.h>
-#include <wheelchair_kld/odometry_motion_model.h>
-#include <mrpt/slam/CMonteCarloLocalization2D.h>
 
 #include <time.h>
 
@@ -252,9 +252,7 @@ class MrptKld {
     pdf_.resetUniform(p.x - 2 * sxy, p.x + 2 * sxy, p.y - 2 * sxy, p.y + 2 * sxy, p.yaw - 2 * sth,
                       p.yaw + 2 * sth, particles);
   }
-  void initGlobal(int particles) {
-    pdf_.resetUniformFreeSpace(grid_.get(), 0.7f, particles);
-  }
+  void initGlobal(int particles) { pdf_.resetUniformFreeSpace(grid_.get(), 0.7f, particles); }
   /// Returns true if the filter updated (the odometry moved update_min_d / update_min_a).
   bool update(const Pose2D& odom, const wheelchair_core::LaserScan2D& s, const Pose2D& sensor) {
     const mrpt::poses::CPose2D now(odom.x, odom.y, odom.yaw);
@@ -276,9 +274,9 @@ class MrptKld {
     obs->sensorPose = mrpt::poses::CPose3D(sensor.x, sensor.y, 0, sensor.yaw + centre, 0, 0);
     obs->resizeScan(s.ranges.size());
     for (size_t i = 0; i < s.ranges.size(); ++i) {
-      const bool ok = wheelchair_core::classifyBeam(s.ranges[i], s) ==
-                          wheelchair_core::Beam::kReturn &&
-                      s.ranges[i] < obs->maxRange;
+      const bool ok =
+          wheelchair_core::classifyBeam(s.ranges[i], s) == wheelchair_core::Beam::kReturn &&
+          s.ranges[i] < obs->maxRange;
       obs->setScanRange(i, ok ? s.ranges[i] : obs->maxRange);
       obs->setScanRangeValidity(i, ok);
     }
@@ -295,9 +293,9 @@ class MrptKld {
   /// as a 163 deg turn, 2 cm forward and a -170 deg turn: its alfa4 then spreads the position by
   /// ~0.8 m std, and the 200 particles lose the Intel track within 3 updates.
   mrpt::poses::CPosePDFParticles::Ptr ourMotionSamples(const Pose2D& odom) const {
-    const auto u = wheelchair_kld::decomposeOdometry(
-        mrpt::math::TPose2D(last_.x(), last_.y(), last_.phi()),
-        mrpt::math::TPose2D(odom.x, odom.y, odom.yaw));
+    const auto u =
+        wheelchair_kld::decomposeOdometry(mrpt::math::TPose2D(last_.x(), last_.y(), last_.phi()),
+                                          mrpt::math::TPose2D(odom.x, odom.y, odom.yaw));
     auto samples = mrpt::poses::CPosePDFParticles::Create(kMotionSamples);
     auto& rng = mrpt::random::getRandomGenerator();
     for (auto& p : samples->m_particles)

@@ -135,8 +135,8 @@ TEST_F(ReplayBag, aBagOfARealLogSliceReplaysAsTheCarmenSliceDoes) {
   auto carmen = numbers(run(kReplay + " --log " + slice + common));
   auto from_bag = numbers(run(kReplay + " --log " + bag + " --odom-topic /odom" + common));
   std::cout << "carmen: " << carmen["position_rms_m"] << " m, " << carmen["heading_rms_deg"]
-            << " deg; bag: " << from_bag["position_rms_m"] << " m, "
-            << from_bag["heading_rms_deg"] << " deg\n";
+            << " deg; bag: " << from_bag["position_rms_m"] << " m, " << from_bag["heading_rms_deg"]
+            << " deg\n";
 
   // Every scan of the bag found its tf and its reference pose.
   EXPECT_EQ(from_bag["scans"], kSliceScans);
