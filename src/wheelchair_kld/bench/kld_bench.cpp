@@ -11,6 +11,7 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
+#include <wheelchair_kld/mrpt_equivalent.h>
 #include <wheelchair_logs/carmen_log.h>
 
 #include <cmath>
@@ -125,23 +126,10 @@ std::vector<StepRecord> runMrpt(const LocalizationMap& map, const std::vector<Dr
   pdf.resetUniform(t0.x - 0.2, t0.x + 0.2, t0.y - 0.2, t0.y + 0.2, t0.yaw - 0.1, t0.yaw + 0.1,
                    2000);
   mrpt::bayes::CParticleFilter pf;
-  pf.m_options.adaptiveSampleSize = true;
-  pf.m_options.resamplingMethod = mrpt::bayes::CParticleFilter::prMultinomial;
-  pf.m_options.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
-  mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motion;
-  motion.modelSelection = mrpt::obs::CActionRobotMovement2D::mmThrun;
-  // The same odometry noise as ours: MRPT's Thrun model draws with std = alfa * |motion| where
-  // ours has variance = alpha * motion^2, hence alfa = sqrt(alpha); the same tempering of the
-  // likelihood (weight *= likelihood^powFactor), instead of MRPT's defaults (1 % translation
-  // noise, no tempering).
-  const MotionNoise& mn = kp.motion;
-  motion.thrunModel.alfa1_rot_rot = static_cast<float>(std::sqrt(mn.alpha1));
-  motion.thrunModel.alfa2_rot_trans = static_cast<float>(std::sqrt(mn.alpha2));
-  motion.thrunModel.alfa3_trans_trans = static_cast<float>(std::sqrt(mn.alpha3));
-  motion.thrunModel.alfa4_trans_rot = static_cast<float>(std::sqrt(mn.alpha4));
-  motion.thrunModel.additional_std_XY = static_cast<float>(mn.min_xy_std);
-  motion.thrunModel.additional_std_phi = static_cast<float>(mn.min_theta_std);
-  pf.m_options.powFactor = kp.measurement.likelihood_exponent;
+  // The same odometry noise and likelihood tempering as ours, instead of MRPT's defaults (1 %
+  // translation noise, no tempering).
+  pf.m_options = wheelchair_kld::mrptFilterOptions(kp);
+  const auto motion = wheelchair_kld::mrptThrunMotion(kp);
   std::vector<StepRecord> out;
   auto mrptPose = [](const Pose2D& p) { return mrpt::poses::CPose2D(p.x, p.y, p.yaw); };
   Pose2D last = drive.front().odom;

@@ -15,6 +15,7 @@
 #include <wheelchair_core/config.h>
 #include <wheelchair_core/map_io.h>
 #include <wheelchair_kld/kld_localizer.h>
+#include <wheelchair_kld/mrpt_equivalent.h>
 #include <wheelchair_kld/odometry_motion_model.h>
 #include <wheelchair_kld/reference_fit.h>
 #include <wheelchair_logs/bag_scans.h>
@@ -235,18 +236,8 @@ class MrptKld {
     kld.KLD_delta = kp.delta;
     kld.KLD_minSampleSize = kp.min_particles;
     kld.KLD_maxSampleSize = kp.max_particles;
-    pf_.m_options.adaptiveSampleSize = true;
-    pf_.m_options.resamplingMethod = mrpt::bayes::CParticleFilter::prMultinomial;  // KLD needs it
-    pf_.m_options.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
-    pf_.m_options.powFactor = kp.measurement.likelihood_exponent;
-    motion_.modelSelection = mrpt::obs::CActionRobotMovement2D::mmThrun;
-    const auto& mn = kp.motion;
-    motion_.thrunModel.alfa1_rot_rot = static_cast<float>(std::sqrt(mn.alpha1));
-    motion_.thrunModel.alfa2_rot_trans = static_cast<float>(std::sqrt(mn.alpha2));
-    motion_.thrunModel.alfa3_trans_trans = static_cast<float>(std::sqrt(mn.alpha3));
-    motion_.thrunModel.alfa4_trans_rot = static_cast<float>(std::sqrt(mn.alpha4));
-    motion_.thrunModel.additional_std_XY = static_cast<float>(mn.min_xy_std);
-    motion_.thrunModel.additional_std_phi = static_cast<float>(mn.min_theta_std);
+    pf_.m_options = wheelchair_kld::mrptFilterOptions(kp);  // multinomial: KLD needs it
+    motion_ = wheelchair_kld::mrptThrunMotion(kp);
   }
   void initAround(const Pose2D& p, double sxy, double sth, int particles) {
     pdf_.resetUniform(p.x - 2 * sxy, p.x + 2 * sxy, p.y - 2 * sxy, p.y + 2 * sxy, p.yaw - 2 * sth,
