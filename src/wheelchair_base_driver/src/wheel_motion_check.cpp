@@ -10,11 +10,6 @@ std::string format(const char* fmt, const char* wheel, double a, double b) {
   std::snprintf(text, sizeof(text), fmt, wheel, a, b);
   return text;
 }
-std::string format4(const char* fmt, double a, double b, double c, double d) {
-  char text[200];
-  std::snprintf(text, sizeof(text), fmt, a, b, c, d);
-  return text;
-}
 bool opposite(double rate, double torque) { return rate * torque < 0.0; }
 }  // namespace
 
@@ -37,7 +32,6 @@ void WheelMotionCheck::onEncoder(double stamp, double left_angle, double right_a
       w.angle = angles[i];
       w.counted_at = stamp;
       w.other_at_count = angles[1 - i];
-      w.max_torque = 0.0;
     }
   }
 }
@@ -63,7 +57,6 @@ WheelVerdict WheelMotionCheck::checkWheel(const char* name, Wheel& w, const Whee
   }
   if (!counting || !std::isfinite(w.counted_at)) return {};  // a silent MC is another fault
 
-  w.max_torque = std::max(w.max_torque, std::abs(s.torque));
   const double still = now - w.counted_at;
   const double other_turned = std::abs(other.angle - w.other_at_count);
   // The angle rule also needs the other wheel to have turned faster than encoder_check_rate on
@@ -78,11 +71,11 @@ WheelVerdict WheelMotionCheck::checkWheel(const char* name, Wheel& w, const Whee
   if (pushed_to_move &&
       ((still > config_.encoder_check_time && std::abs(other.rate) > config_.encoder_check_rate) ||
        (other_turned >= config_.encoder_check_angle && other_fast)))
-    return {WheelFault::kFrozenEncoder,
-            format("%s encoder did not count for %.2f s while the other wheel turned %.2f rad",
-                   name, still, other_turned) +
-                format4(" (its torque %.1f N m, max %.1f; the other at %.2f rad/s, %.1f N m)",
-                        s.torque, w.max_torque, other.rate, other.torque)};
+    return {
+        WheelFault::kFrozenEncoder,
+        format("%s encoder did not count for %.2f s while the other wheel turned %.2f rad", name,
+               still, other_turned) +
+            format(" (%s torque %.1f N m; the other at %.2f rad/s)", "its", s.torque, other.rate)};
   if (pushed && now - std::max(w.pushed_since, w.counted_at) >= config_.stall_time)
     return {WheelFault::kStalled, format("%s wheel did not turn for %.2f s under %.1f N m", name,
                                          now - std::max(w.pushed_since, w.counted_at), s.torque)};

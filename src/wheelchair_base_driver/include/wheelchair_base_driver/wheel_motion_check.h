@@ -55,7 +55,6 @@ class WheelMotionCheck {
     double pushed_since = NAN;    ///< [s] |torque| >= stall_torque since
     double against_since = NAN;   ///< [s] turning against |torque| >= stall_torque since
     double against_rate = 0.0;    ///< |rate| then
-    double max_torque = 0.0;      ///< [N m] the largest |torque| since its last count
   };
   WheelVerdict checkWheel(const char* name, Wheel& wheel, const WheelState& state,
                           const WheelState& other, double now, bool counting);
