@@ -53,16 +53,23 @@ void BayesMapper::markOccupied(int ix, int iy) {
                                     grid_.getRow(0), grid_.getSizeX());
 }
 
+// The grid grows by whole cells, so every cell keeps its place on the lattice the grid started
+// on (the world's, a map's origin at a multiple of the resolution). MRPT's resizeGrid snaps a
+// new border to a multiple of the resolution only when it is more than 5 % of a cell off it, and
+// otherwise takes it as given: the office's live map grew to an origin 1.7 mm off its lattice
+// (-16.8517 instead of -16.85), every later cell boundary 1.7 mm from the walls' faces.
 void BayesMapper::growToFit(double x_min, double x_max, double y_min, double y_max) {
-  if (x_min >= grid_.getXMin() && x_max < grid_.getXMax() && y_min >= grid_.getYMin() &&
-      y_max < grid_.getYMax()) {
-    return;
-  }
+  const double gx_min = grid_.getXMin(), gx_max = grid_.getXMax();
+  const double gy_min = grid_.getYMin(), gy_max = grid_.getYMax();
+  if (x_min >= gx_min && x_max < gx_max && y_min >= gy_min && y_max < gy_max) return;
+  const double res = grid_.getResolution();
   const double m = config_.growth_margin;
-  grid_.resizeGrid(static_cast<float>(std::min<double>(x_min - m, grid_.getXMin())),
-                   static_cast<float>(std::max<double>(x_max + m, grid_.getXMax())),
-                   static_cast<float>(std::min<double>(y_min - m, grid_.getYMin())),
-                   static_cast<float>(std::max<double>(y_max + m, grid_.getYMax())), 0.5f, false);
+  // Whole cells beyond each border (none where the grid already reaches).
+  auto cells = [res](double beyond) { return beyond > 0 ? std::ceil(beyond / res - 1e-6) : 0.0; };
+  grid_.resizeGrid(static_cast<float>(gx_min - res * cells(gx_min - (x_min - m))),
+                   static_cast<float>(gx_max + res * cells((x_max + m) - gx_max)),
+                   static_cast<float>(gy_min - res * cells(gy_min - (y_min - m))),
+                   static_cast<float>(gy_max + res * cells((y_max + m) - gy_max)), 0.5f, false);
 }
 
 // Cells across the beam's footprint at the return, one per half cell along the arc.

@@ -136,6 +136,28 @@ TEST(BayesMapper, GrowsToFitScansAndKeepsWhatItHad) {
   EXPECT_LE(m.grid().getYMin(), -30.1f);
 }
 
+// A return whose border lies 1.7 mm off the 5 cm lattice (the office's live map grew to
+// y_min -16.8517 so): the grid grows by whole cells and its borders stay on the lattice it
+// started on, so a wall face on a cell boundary of the world stays on one of the map's.
+TEST(BayesMapper, GrowsByWholeCellsSoItsBordersStayOnTheLattice) {
+  MapperConfig config;
+  config.initial_size = 4.0;  // [-2, 2]
+  config.growth_margin = 1.0;
+  BayesMapper m(config);
+  const wheelchair_core::Pose2D below{0.025, -1.0, -M_PI / 2};
+  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {4.8517f}), below).inserted);
+  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {3.3333f}, 2.0), wheelchair_core::Pose2D{0.7, 0.3, 0.4})
+                  .inserted);
+  const double res = m.grid().getResolution();
+  for (double border : {m.grid().getXMin(), m.grid().getXMax(), m.grid().getYMin(),
+                        m.grid().getYMax()}) {
+    EXPECT_NEAR(border / res, std::round(border / res), 1e-3) << "border " << border;
+  }
+  EXPECT_LT(m.grid().getYMin(), -1.0 - 4.8517 - 1.0 + 1e-4);  // the return and the margin
+  EXPECT_NEAR(m.grid().getXMin(), -2.0f, 1e-6);               // a side that did not need to grow
+  EXPECT_GT(occ(m, 0.025, -5.8517), 0.5);  // the return's cell, where it was inserted
+}
+
 TEST(BayesMapper, ReturnsBeyondTheInsertionRangeOnlyClearSpace) {
   MapperConfig config;
   config.model.max_insertion_range = 2.0;
