@@ -116,28 +116,34 @@ bool LoopCloser::closeLoop(KeyframeGraph& g, size_t k, SlamStats& stats) const {
   return true;
 }
 
+std::vector<size_t> nearestKeyframes(const KeyframeGraph& g, const Pose2D& at, double radius,
+                                     size_t count) {
+  std::vector<std::pair<double, size_t>> near;
+  for (size_t j = 0; j < g.keyframes.size() && j < g.graph.size(); ++j) {
+    const Pose2D& pj = g.graph.poses()[j];
+    const double d = std::hypot(pj.x - at.x, pj.y - at.y);
+    if (d < radius) near.emplace_back(d, j);
+  }
+  std::sort(near.begin(), near.end());
+  std::vector<size_t> out;
+  for (size_t i = 0; i < near.size() && i < count; ++i) out.push_back(near[i].second);
+  return out;
+}
+
 DriveStart LoopCloser::locate(const KeyframeGraph& g, const Points& points,
                               const Pose2D& guess) const {
   const LoopClosureConfig& lc = config_.loops;
   DriveStart out;
   out.pose = guess;
-  size_t best = g.keyframes.size();
-  double best_d = lc.search_radius;
-  for (size_t j = 0; j < g.keyframes.size(); ++j) {
-    const Pose2D& pj = g.graph.poses()[j];
-    const double d = std::hypot(pj.x - guess.x, pj.y - guess.y);
-    if (d < best_d) {
-      best_d = d;
-      best = j;
-    }
-  }
-  if (best == g.keyframes.size()) return out;
-  const size_t w = static_cast<size_t>(lc.submap_half_width);
-  const size_t first = best > w ? best - w : 0;
-  const size_t last = std::min(best + w, g.keyframes.size() - 1);
-  for (size_t j = first; j <= last; ++j) out.submap.push_back(j);
-  out.anchor = best;
-  const Points submap = keyframePoints(g, first, last, g.keyframes.size());
+  // The keyframes nearest the predicted start, whichever drive and place in the graph's order
+  // they have: a continued map's index neighbours of the nearest keyframe may be another
+  // drive's, elsewhere (the study's session 6 was never placed so).
+  out.submap = nearestKeyframes(g, guess, lc.search_radius,
+                                2 * static_cast<size_t>(lc.submap_half_width) + 1);
+  if (out.submap.empty()) return out;
+  out.anchor = out.submap.front();
+  Points submap;
+  for (size_t j : out.submap) appendTransformed(*g.keyframes[j].points, g.graph.poses()[j], submap);
   const LikelihoodGrid grid(submap, lc.grid_resolution, lc.grid_resolution);
   const SearchResult found = correlativeSearch(grid, everySecond(points), guess, loopWindow(lc));
   out.score = found.score;

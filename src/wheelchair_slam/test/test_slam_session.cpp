@@ -7,9 +7,11 @@
 #include <wheelchair_slam/slam_map.h>
 #include <wheelchair_slam/slam_session.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include "synthetic_world.h"
 
@@ -172,6 +174,58 @@ TEST(SlamSession, ALiveContinuedMapTakesANewDriveOnAClockThatStartedAgain) {
   both.insert(both.end(), second.scans.begin(), second.scans.begin() + n);
   buildMap(both, estimate, wheelchair_mapping::MapperConfig{}, &skipped);
   EXPECT_EQ(skipped, 0u) << "no scan of either drive is refused for its clock";
+}
+
+// A continued map holds its drives one after another: the nearest keyframe's neighbours in the
+// graph's order may lie in another drive, elsewhere. Here the saved lap's keyframes are put in
+// a shuffled order (no index neighbour is a spatial one); a new drive's first scan, 0.3 m and
+// 0.05 rad from its odometry-predicted start, is still matched against the keyframes nearest
+// that start (checked against a search of its own) and placed to a few centimetres.
+TEST(SlamSession, ANewDriveIsPlacedAmongTheKeyframesNearestItsPredictedStartNotItsIndexNeighbours) {
+  const Drive d = drive(1, 5, {0, 0, 0}, 0.0);
+  const SlamConfig config;
+  GraphSlam slam{config};
+  for (size_t i = 0; i < d.scans.size(); ++i) slam.addScan(d.scans[i], d.odometry[i]);
+  slam.finish();
+  const KeyframeGraph& g = slam.keyframeGraph();
+  ASSERT_GT(g.keyframes.size(), 40u);
+  std::vector<size_t> order(g.keyframes.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::mt19937 rng(17);
+  std::shuffle(order.begin(), order.end(), rng);
+  KeyframeGraph shuffled;
+  for (size_t k : order) {
+    shuffled.graph.addNode(g.graph.poses()[k]);
+    shuffled.keyframes.push_back(g.keyframes[k]);
+  }
+  // Where the truth's pose 40 lies in the map frame (the map frame: the drive's first pose).
+  const std::vector<Pose2D> estimate = slam.trajectory();
+  const Pose2D world_to_map =
+      wheelchair_core::compose(estimate[0], wheelchair_core::inverse(d.truth[0]));
+  const Pose2D truth = wheelchair_core::compose(world_to_map, d.truth[40]);
+  std::mt19937 noise(23);
+  const Points points =
+      scanPoints(wheelchair_slam_test::castScan(wheelchair_slam_test::officeWorld(), d.truth[40],
+                                                100.0, 0.01, noise),
+                 config.matcher.max_range, config.matcher.point_spacing);
+  const Pose2D guess = wheelchair_core::compose(truth, Pose2D{0.3, -0.15, 0.05});
+
+  const DriveStart start = LoopCloser(config).locate(shuffled, points, guess);
+  std::vector<std::pair<double, size_t>> by_distance;  // the test's own nearest keyframes
+  for (size_t j = 0; j < shuffled.keyframes.size(); ++j) {
+    const Pose2D& p = shuffled.graph.poses()[j];
+    by_distance.emplace_back(std::hypot(p.x - guess.x, p.y - guess.y), j);
+  }
+  std::sort(by_distance.begin(), by_distance.end());
+  const size_t n = 2 * static_cast<size_t>(config.loops.submap_half_width) + 1;
+  ASSERT_EQ(start.submap.size(), n);
+  for (size_t i = 0; i < n; ++i) {
+    EXPECT_EQ(start.submap[i], by_distance[i].second) << "the " << i << "th nearest keyframe";
+  }
+  EXPECT_EQ(start.anchor, by_distance[0].second);
+  ASSERT_TRUE(start.located) << "score " << start.score;
+  EXPECT_LT(std::hypot(start.pose.x - truth.x, start.pose.y - truth.y), 0.05);
+  EXPECT_LT(std::abs(wheelchair_core::angleDifference(start.pose.yaw, truth.yaw)), 0.02);
 }
 
 TEST(SlamSession, ADriveStartedWhereTheMapHasNoKeyframeIsNotLocatedAndAddsNothing) {

@@ -80,6 +80,10 @@ struct KeyframeGraph {
 /// The points of keyframes first..last (and before exclude_from) in the map frame.
 Points keyframePoints(const KeyframeGraph& g, size_t first, size_t last, size_t exclude_from);
 
+/// Up to `count` keyframes within `radius` of `at`, nearest first.
+std::vector<size_t> nearestKeyframes(const KeyframeGraph& g, const wheelchair_core::Pose2D& at,
+                                     double radius, size_t count);
+
 /// Where a new drive's first scan lies among the keyframes of a map (LoopCloser::locate).
 struct DriveStart {
   bool located = false;
@@ -107,8 +111,8 @@ class LoopCloser {
   /// The final pass of loop closures (LoopClosureConfig::final_pass): every keyframe matched
   /// against up to final_per_keyframe earlier passes within final_radius.
   void densifyLoops(KeyframeGraph& g, SlamStats& stats) const;
-  /// Locates `points` (a scan in the sensor frame) among the keyframes within
-  /// loops.search_radius of `guess`: correlative search over the loop window, refined by ICP,
+  /// Locates `points` (a scan in the sensor frame) among the 2 submap_half_width + 1 keyframes
+  /// nearest `guess` within loops.search_radius (nearestKeyframes): correlative search over the loop window, refined by ICP,
   /// accepted on the loop closures' score, goodness and agreement.
   DriveStart locate(const KeyframeGraph& g, const Points& points,
                     const wheelchair_core::Pose2D& guess) const;
