@@ -146,11 +146,11 @@ TEST(BayesMapper, GrowsByWholeCellsSoItsBordersStayOnTheLattice) {
   BayesMapper m(config);
   const wheelchair_core::Pose2D below{0.025, -1.0, -M_PI / 2};
   ASSERT_TRUE(m.insert(fan(0.0, 0.1, {4.8517f}), below).inserted);
-  ASSERT_TRUE(m.insert(fan(0.0, 0.1, {3.3333f}, 2.0), wheelchair_core::Pose2D{0.7, 0.3, 0.4})
-                  .inserted);
+  ASSERT_TRUE(
+      m.insert(fan(0.0, 0.1, {3.3333f}, 2.0), wheelchair_core::Pose2D{0.7, 0.3, 0.4}).inserted);
   const double res = m.grid().getResolution();
-  for (double border : {m.grid().getXMin(), m.grid().getXMax(), m.grid().getYMin(),
-                        m.grid().getYMax()}) {
+  for (double border :
+       {m.grid().getXMin(), m.grid().getXMax(), m.grid().getYMin(), m.grid().getYMax()}) {
     EXPECT_NEAR(border / res, std::round(border / res), 1e-3) << "border " << border;
   }
   EXPECT_LT(m.grid().getYMin(), -1.0 - 4.8517 - 1.0 + 1e-4);  // the return and the margin

@@ -112,8 +112,8 @@ class LoopCloser {
   /// against up to final_per_keyframe earlier passes within final_radius.
   void densifyLoops(KeyframeGraph& g, SlamStats& stats) const;
   /// Locates `points` (a scan in the sensor frame) among the 2 submap_half_width + 1 keyframes
-  /// nearest `guess` within loops.search_radius (nearestKeyframes): correlative search over the loop window, refined by ICP,
-  /// accepted on the loop closures' score, goodness and agreement.
+  /// nearest `guess` within loops.search_radius (nearestKeyframes): correlative search over the
+  /// loop window, refined by ICP, accepted on the loop closures' score, goodness and agreement.
   DriveStart locate(const KeyframeGraph& g, const Points& points,
                     const wheelchair_core::Pose2D& guess) const;
 
