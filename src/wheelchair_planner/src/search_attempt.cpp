@@ -117,6 +117,11 @@ double SearchAttempt::penalty(double c) const {
   return params_.clearance_weight * t * t;
 }
 
+bool SearchAttempt::reachedAsCheaply(const Pose2D& p, bool reverse, double g) const {
+  const auto it = best_g_.find(key(p, reverse));
+  return it != best_g_.end() && it->second <= g + 1e-9;
+}
+
 void SearchAttempt::push(const Node& n) {
   const int64_t k = key(n.pose, n.reverse);
   const auto it = best_g_.find(k);
@@ -233,6 +238,14 @@ void SearchAttempt::expand(int idx, const Node& node) {
       continue;
     const double d = reverse ? -attempt_.step : attempt_.step;
     for (const double kappa : curvatures_) {
+      // Its cost without the clearance penalty is a lower bound: where a node as cheap reached
+      // that state already, push() would refuse this one, so its poses are not checked (most
+      // primitives of a lattice land on states reached before; a Hybrid A* closed-set check).
+      const Pose2D end = arcEnd(node.pose, kappa, d);
+      const double base = attempt_.step * (1.0 + params_.turn_weight * std::abs(kappa)) *
+                              (driven_reverse ? params_.reverse_cost : 1.0) +
+                          (cusp ? params_.cusp_cost : 0.0);
+      if (reachedAsCheaply(end, reverse, node.g + base)) continue;
       // Coarse here (5 cm / 5 degrees); a candidate's whole sweep is verified finely.
       const int n = std::max(
           {1, static_cast<int>(std::ceil(attempt_.step / 0.05)),
@@ -247,7 +260,6 @@ void SearchAttempt::expand(int idx, const Node& node) {
         }
         cmin = std::min(cmin, c.clearance);
       }
-      const Pose2D end = arcEnd(node.pose, kappa, d);
       if (std::isfinite(block.clearance)) {
         const double hb = heuristic(node.pose);
         if (hb < closest_ || (hb == closest_ && block.clearance < closest_block_.clearance)) {

@@ -105,6 +105,9 @@ class SearchAttempt {
   int64_t key(const Pose2D& p, bool reverse) const;
   /// Cost per metre for a primitive whose smallest footprint clearance is `c`.
   double penalty(double c) const;
+  /// A node at least as cheap as `g` has reached the state of `p` (arriving `reverse`): push()
+  /// would refuse one of cost `g` there.
+  bool reachedAsCheaply(const Pose2D& p, bool reverse, double g) const;
   void push(const Node& n);
   /// The start position, the primitives' poses (every 5 cm) up to node `idx`, and the goal
   /// (unless `with_goal` is false).
