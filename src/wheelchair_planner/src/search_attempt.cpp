@@ -42,7 +42,8 @@ Pose2D arcEnd(const Pose2D& p, double kappa, double d) {
 
 SearchAttempt::SearchAttempt(const FootprintChecker& checker, const Pose2D& start,
                              const Pose2D& goal, const FootprintSearchParams& params,
-                             const FootprintSearchParams::Attempt& attempt, const SweepModel& sweep)
+                             const FootprintSearchParams::Attempt& attempt, const SweepModel& sweep,
+                             HeuristicFields& fields)
     : checker_(checker),
       cs_(checker.configSpace()),
       start_(attempt.backward ? goal : start),
@@ -52,6 +53,7 @@ SearchAttempt::SearchAttempt(const FootprintChecker& checker, const Pose2D& star
       params_(params),
       attempt_(attempt),
       sweep_(sweep),
+      fields_(fields),
       bin_angle_(2.0 * M_PI / params.heading_bins),
       closest_pose_(start_),
       closest_block_{kInf, start_.x, start_.y} {
@@ -69,8 +71,10 @@ bool SearchAttempt::prepare(std::string& reason) {
     return false;
   }
   const double axle_radius = checker_.inscribedRadius() + params_.min_clearance - cs_.resolution();
-  h_ = geodesicToGoal(cs_, axle_radius, gx, gy);
-  if (!std::isfinite(h_[cs_.index(sx, sy)])) {
+  std::vector<double>& field = attempt_.backward ? fields_.to_start : fields_.to_goal;
+  if (field.empty()) field = geodesicToGoal(cs_, axle_radius, gx, gy);
+  h_ = &field;
+  if (!std::isfinite((*h_)[cs_.index(sx, sy)])) {
     reason = "footprint search: the goal is not reachable even for the chair's axle disc";
     return false;
   }
@@ -97,7 +101,7 @@ bool SearchAttempt::poseOk(const Pose2D& p, bool start_rotation, FootprintContac
 double SearchAttempt::heuristic(const Pose2D& p) const {
   int ix, iy;
   if (!cs_.worldToCell(p.x, p.y, ix, iy)) return kInf;
-  return attempt_.heuristic_weight * h_[cs_.index(ix, iy)];
+  return attempt_.heuristic_weight * (*h_)[cs_.index(ix, iy)];
 }
 
 int64_t SearchAttempt::cellKey(const Pose2D& p) const { return key(p, false) / 2; }
