@@ -52,8 +52,9 @@ FootprintSearchResult footprintSearch(const FootprintChecker& checker, const Pos
     return result;
   }
   std::vector<std::unique_ptr<SearchAttempt>> runs;
+  HeuristicFields fields;  // one field per direction, not one per run
   for (const FootprintSearchParams::Attempt& a : params.attempts)
-    runs.push_back(std::make_unique<SearchAttempt>(checker, start, goal, params, a, sweep));
+    runs.push_back(std::make_unique<SearchAttempt>(checker, start, goal, params, a, sweep, fields));
   // Each run tries to join the trees of the runs searching the other way.
   for (const auto& run : runs) {
     std::vector<const SearchAttempt*> partners;

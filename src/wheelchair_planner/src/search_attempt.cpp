@@ -42,7 +42,8 @@ Pose2D arcEnd(const Pose2D& p, double kappa, double d) {
 
 SearchAttempt::SearchAttempt(const FootprintChecker& checker, const Pose2D& start,
                              const Pose2D& goal, const FootprintSearchParams& params,
-                             const FootprintSearchParams::Attempt& attempt, const SweepModel& sweep)
+                             const FootprintSearchParams::Attempt& attempt, const SweepModel& sweep,
+                             HeuristicFields& fields)
     : checker_(checker),
       cs_(checker.configSpace()),
       start_(attempt.backward ? goal : start),
@@ -52,6 +53,7 @@ SearchAttempt::SearchAttempt(const FootprintChecker& checker, const Pose2D& star
       params_(params),
       attempt_(attempt),
       sweep_(sweep),
+      fields_(fields),
       bin_angle_(2.0 * M_PI / params.heading_bins),
       closest_pose_(start_),
       closest_block_{kInf, start_.x, start_.y} {
@@ -69,8 +71,10 @@ bool SearchAttempt::prepare(std::string& reason) {
     return false;
   }
   const double axle_radius = checker_.inscribedRadius() + params_.min_clearance - cs_.resolution();
-  h_ = geodesicToGoal(cs_, axle_radius, gx, gy);
-  if (!std::isfinite(h_[cs_.index(sx, sy)])) {
+  std::vector<double>& field = attempt_.backward ? fields_.to_start : fields_.to_goal;
+  if (field.empty()) field = geodesicToGoal(cs_, axle_radius, gx, gy);
+  h_ = &field;
+  if (!std::isfinite((*h_)[cs_.index(sx, sy)])) {
     reason = "footprint search: the goal is not reachable even for the chair's axle disc";
     return false;
   }
@@ -97,7 +101,7 @@ bool SearchAttempt::poseOk(const Pose2D& p, bool start_rotation, FootprintContac
 double SearchAttempt::heuristic(const Pose2D& p) const {
   int ix, iy;
   if (!cs_.worldToCell(p.x, p.y, ix, iy)) return kInf;
-  return attempt_.heuristic_weight * h_[cs_.index(ix, iy)];
+  return attempt_.heuristic_weight * (*h_)[cs_.index(ix, iy)];
 }
 
 int64_t SearchAttempt::cellKey(const Pose2D& p) const { return key(p, false) / 2; }
@@ -115,6 +119,11 @@ double SearchAttempt::penalty(double c) const {
   const double span = std::max(1e-6, params_.soft_clearance - params_.min_clearance);
   const double t = std::clamp((params_.soft_clearance - c) / span, 0.0, 1.0);
   return params_.clearance_weight * t * t;
+}
+
+bool SearchAttempt::reachedAsCheaply(const Pose2D& p, bool reverse, double g) const {
+  const auto it = best_g_.find(key(p, reverse));
+  return it != best_g_.end() && it->second <= g + 1e-9;
 }
 
 void SearchAttempt::push(const Node& n) {
@@ -233,6 +242,14 @@ void SearchAttempt::expand(int idx, const Node& node) {
       continue;
     const double d = reverse ? -attempt_.step : attempt_.step;
     for (const double kappa : curvatures_) {
+      // Its cost without the clearance penalty is a lower bound: where a node as cheap reached
+      // that state already, push() would refuse this one, so its poses are not checked (most
+      // primitives of a lattice land on states reached before; a Hybrid A* closed-set check).
+      const Pose2D end = arcEnd(node.pose, kappa, d);
+      const double base = attempt_.step * (1.0 + params_.turn_weight * std::abs(kappa)) *
+                              (driven_reverse ? params_.reverse_cost : 1.0) +
+                          (cusp ? params_.cusp_cost : 0.0);
+      if (reachedAsCheaply(end, reverse, node.g + base)) continue;
       // Coarse here (5 cm / 5 degrees); a candidate's whole sweep is verified finely.
       const int n = std::max(
           {1, static_cast<int>(std::ceil(attempt_.step / 0.05)),
@@ -247,7 +264,6 @@ void SearchAttempt::expand(int idx, const Node& node) {
         }
         cmin = std::min(cmin, c.clearance);
       }
-      const Pose2D end = arcEnd(node.pose, kappa, d);
       if (std::isfinite(block.clearance)) {
         const double hb = heuristic(node.pose);
         if (hb < closest_ || (hb == closest_ && block.clearance < closest_block_.clearance)) {

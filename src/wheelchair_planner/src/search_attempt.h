@@ -19,12 +19,19 @@
 
 namespace wheelchair_planner {
 
+/// The heuristic fields of one search, shared by its runs: every forward run's is the geodesic
+/// distance to the goal, every backward run's to the start (the same axle disc), computed once
+/// by the first run of each direction that starts (footprint_search.cpp).
+struct HeuristicFields {
+  std::vector<double> to_goal, to_start;  ///< empty until computed
+};
+
 class SearchAttempt {
  public:
   /// All references must outlive the attempt.
   SearchAttempt(const FootprintChecker& checker, const Pose2D& start, const Pose2D& goal,
                 const FootprintSearchParams& params, const FootprintSearchParams::Attempt& attempt,
-                const SweepModel& sweep);
+                const SweepModel& sweep, HeuristicFields& fields);
 
   enum class Status {
     kRunning,    ///< open nodes left: may be advanced further
@@ -105,6 +112,9 @@ class SearchAttempt {
   int64_t key(const Pose2D& p, bool reverse) const;
   /// Cost per metre for a primitive whose smallest footprint clearance is `c`.
   double penalty(double c) const;
+  /// A node at least as cheap as `g` has reached the state of `p` (arriving `reverse`): push()
+  /// would refuse one of cost `g` there.
+  bool reachedAsCheaply(const Pose2D& p, bool reverse, double g) const;
   void push(const Node& n);
   /// The start position, the primitives' poses (every 5 cm) up to node `idx`, and the goal
   /// (unless `with_goal` is false).
@@ -118,7 +128,8 @@ class SearchAttempt {
   const FootprintSearchParams& params_;
   const FootprintSearchParams::Attempt attempt_;
   const SweepModel& sweep_;
-  std::vector<double> h_;  ///< geodesic distance to the goal per cell [m]
+  HeuristicFields& fields_;
+  const std::vector<double>* h_ = nullptr;  ///< geodesic distance to goal_ per cell [m]
   ClearanceRule rule_;
   double bin_angle_ = 0.0;
   std::vector<double> curvatures_;

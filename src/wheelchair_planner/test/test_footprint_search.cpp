@@ -12,8 +12,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <ctime>
 #include <string>
+#include <vector>
 
 using namespace wheelchair_planner;
 using wheelchair_core::OccupancyMap;
@@ -107,4 +111,53 @@ TEST(FootprintSearch, WithReverseOffTheBackwardRunsBringNoReverseMotion) {
                                                   {2.0, 3.5, 0.0}, search, settings.gate.sweep);
   EXPECT_FALSE(r.found) << "reversed " << wheelchair_core::reversedLength(r.path);
   EXPECT_NE(r.reason.find("forwards only"), std::string::npos) << r.reason;
+}
+
+// The way round of navigation_around (issue 22): flat with a 0.4 m disc the map does not have in
+// the 1.15 m gap east of the dining table, the chair stopped south of the table facing the gap
+// (as the navigator stopped it, 2026-12-02), the goal kitchen_door (facing back into the living
+// room, where the body cannot turn: only a way in backwards fits). The search finds the way
+// round the table's north side, never through the gap, whose executed sweep keeps the minimum
+// clearance by the brute-force check. Its wall time is printed (the issue asks <= 20 ms for a
+// replan on flat; asserted is the work, not the time: the machine is shared).
+TEST(FootprintSearch, TheWayRoundTheDiningTableWithTheGapBlockedIsFoundQuickly) {
+  OccupancyMap map = wheelchair_core::loadMap(std::string(WORLDS_DIR) + "/flat.yaml");
+  const double bx = 5.425, by = 3.30, br = 0.20;  // the disc in the gap
+  for (int iy = 0; iy < map.height; ++iy) {
+    for (int ix = 0; ix < map.width; ++ix) {
+      double x, y;
+      map.cellToWorld(ix, iy, x, y);
+      if (std::hypot(x - bx, y - by) <= br) map.at(ix, iy) = wheelchair_core::kOccupied;
+    }
+  }
+  const PlannerSettings settings = chairBoxSettings();
+  const PlanningMap planning(map, settings);
+  const FootprintSearchParams search = gateSearch(settings);
+  const Pose2D start{4.0, 2.15, 0.0}, goal{6.90, 4.85, M_PI};
+  FootprintSearchResult r;
+  std::vector<double> times, cpu;  // wall (the search's own) and CPU time [s]
+  for (int run = 0; run < 5; ++run) {
+    const std::clock_t c0 = std::clock();
+    r = footprintSearch(planning.checker(), start, goal, search, settings.gate.sweep);
+    cpu.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
+    ASSERT_TRUE(r.found) << r.reason;
+    times.push_back(r.time);
+  }
+  std::sort(times.begin(), times.end());
+  std::sort(cpu.begin(), cpu.end());
+  std::printf(
+      "way round the dining table: %zu expansions, wall %.1f ms (min of 5), %.1f ms (median), "
+      "CPU %.1f ms (min of 5)\n",
+      r.expansions, 1e3 * times.front(), 1e3 * times[2], 1e3 * cpu.front());
+  EXPECT_LT(r.expansions, 3000u);
+  EXPECT_NEAR(r.path.back().x, goal.x, 1e-9);
+  EXPECT_NEAR(r.path.back().y, goal.y, 1e-9);
+  bool north = false;
+  for (const Pose2D& p : r.path) {
+    EXPECT_FALSE(p.x > 4.85 && p.x < 6.0 && p.y > 2.8 && p.y < 3.8)
+        << "through the blocked gap at (" << p.x << ", " << p.y << ")";
+    north = north || (p.x > 3.6 && p.x < 4.85 && p.y > 3.8);
+  }
+  EXPECT_TRUE(north) << "not round the table's north side";
+  EXPECT_GE(bruteSweepClearance(map, start, r.path), search.min_clearance - 0.015);
 }
