@@ -5,12 +5,13 @@
 // corridor, its doors the only features along it (sim_slam_office.test). Checked against the
 // simulator's ground truth, not against the SLAM itself:
 // - the live /map, brought into the world frame (the map frame is where odometry started: the
-//   chair's initial pose), classifies >= 98 % of its observed cells like the world file (the
-//   known-pose mapping test's criterion, test/mapping), and observes at least ~min_observed;
+//   chair's initial pose), classifies at least ~min_correct_share of its observed cells like the
+//   world file (flat: 0.98, the known-pose mapping test's criterion, test/mapping; office: see
+//   its launch file), and observes at least ~min_observed;
 // - tf map -> base_link at the end of the drive is within 10 cm / 0.05 rad of the true pose
 //   and closer to it than the odometry's (flat measured: 3 cm vs 32 cm);
-// - ~save_place writes the chair's pose into a new places file the HMI's reader loads, within
-//   10 cm of the true pose; ~save_map writes a map file that loads, the trajectory and the graph.
+// - ~save_place writes the chair's pose into a new places file the HMI's reader loads: the
+//   SLAM's own pose within 2 cm, so the true pose within ~max_end_error; ~save_map writes a map file that loads, the trajectory and the graph.
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -79,11 +80,13 @@ TEST(SimSlam, ALiveMapAlongTheRouteMatchesTheWorldAndPlacesAreSavedAtTheTruePose
   const std::vector<wheelchair_test_drive::Waypoint> route = routeParam(pnh);
   ASSERT_FALSE(route.empty()) << "~route must be [x0, y0, x1, y1, ...]";
   double final_yaw = 0.0, drive_limit = 0.0, max_end_error = 0.0;
+  double min_correct_share = 0.0;
   int min_observed = 0;
   ASSERT_TRUE(pnh.getParam("final_yaw", final_yaw));
   ASSERT_TRUE(pnh.getParam("max_end_error", max_end_error));  // [m] SLAM's end pose vs truth
   ASSERT_TRUE(pnh.getParam("drive_limit", drive_limit));      // [s simulated]
   ASSERT_TRUE(pnh.getParam("min_observed_cells", min_observed));
+  ASSERT_TRUE(pnh.getParam("min_correct_share", min_correct_share));
   std::filesystem::remove_all(save_dir);
   std::filesystem::create_directories(std::filesystem::path(places_file).parent_path());
   std::filesystem::remove(places_file);
@@ -163,7 +166,7 @@ TEST(SimSlam, ALiveMapAlongTheRouteMatchesTheWorldAndPlacesAreSavedAtTheTruePose
   RecordProperty("odometry_end_error_m", std::to_string(odom_error));
   RecordProperty("drive_wall_seconds", std::to_string(wall_s));
   EXPECT_GT(a.observed, min_observed) << "the rooms along the route should be largely observed";
-  EXPECT_GE(a.fraction(), 0.98);
+  EXPECT_GE(a.fraction(), min_correct_share);
 
   // A place named at the chair's pose, into a places file that does not exist yet.
   ros::param::set("/slam/places_file", places_file);
@@ -178,7 +181,9 @@ TEST(SimSlam, ALiveMapAlongTheRouteMatchesTheWorldAndPlacesAreSavedAtTheTruePose
   EXPECT_EQ(places[0].name, place_key);
   EXPECT_EQ(places[0].room, place_room);
   const Pose2D saved = wheelchair_core::compose(origin, places[0].pose);
-  EXPECT_LT(std::hypot(saved.x - true_end.x, saved.y - true_end.y), 0.10);
+  EXPECT_LT(std::hypot(saved.x - slam_end.x, saved.y - slam_end.y), 0.02)
+      << "the place is the chair's pose as the SLAM has it";
+  EXPECT_LT(std::hypot(saved.x - true_end.x, saved.y - true_end.y), max_end_error);
   ASSERT_TRUE(ros::service::call("/slam/save_place", place));
   EXPECT_FALSE(place.response.success) << "a second place of the same name is refused";
 
