@@ -159,10 +159,10 @@ UpdateResult KldLocalizer::update(const wheelchair_core::Pose2D& odom_pose,
   // A re-localization's cloud is refined over several updates (relocalize_refine_per_update
   // passes each), so no update of a moving chair stalls the node; the first global
   // localization (the chair waits for it) gets every pass at once.
-  const int refine_now =
-      refine_left_ <= 0 ? 0
-      : recovering_     ? std::min(refine_left_, params_.relocalize_refine_per_update)
-                        : refine_left_;
+  const int refine_now = refine_left_ <= 0 ? 0
+                         : recovering_
+                             ? std::min(refine_left_, params_.relocalize_refine_per_update)
+                             : refine_left_;
   // After a re-localization the set stays within relocalize_particles until localized again:
   // the spread set would otherwise ask for M_max and stall the node for seconds.
   int set_max = params_.fixed_particles > 0 ? params_.fixed_particles

@@ -19,8 +19,9 @@ using namespace wheelchair_kld::test;
 namespace {
 
 std::shared_ptr<const LocalizationMap> officeMap() {
-  static const auto map = std::make_shared<LocalizationMap>(
-      loadWorldGrid(std::string(WORLDS_DIR) + "/office.yaml"), KldParams().measurement.max_distance);
+  static const auto map =
+      std::make_shared<LocalizationMap>(loadWorldGrid(std::string(WORLDS_DIR) + "/office.yaml"),
+                                        KldParams().measurement.max_distance);
   return map;
 }
 
@@ -66,11 +67,12 @@ KidnapRun runKidnapping(const KldParams& params, uint64_t seed) {
     if (i < cut) continue;
     ++updates;
     const auto& e = loc.estimate().mean;
-    const bool ok =
-        loc.status().localized() && std::hypot(e.x - s.truth.x, e.y - s.truth.y) < 0.2;
+    const bool ok = loc.status().localized() && std::hypot(e.x - s.truth.x, e.y - s.truth.y) < 0.2;
     r.noticed = r.noticed || !loc.status().localized();
-    if (!ok) r.recovered_after = -1;
-    else if (r.recovered_after < 0) r.recovered_after = updates;
+    if (!ok)
+      r.recovered_after = -1;
+    else if (r.recovered_after < 0)
+      r.recovered_after = updates;
   }
   return r;
 }

@@ -124,7 +124,7 @@ class KldLocalizer {
   int relocalizations_ = 0;
   MeasurementModel::FitCounts fit_;
   int poor_fits_ = 0;
-  bool recovering_ = false;  ///< since a re-localization, until localized again
+  bool recovering_ = false;     ///< since a re-localization, until localized again
   bool global_search_ = false;  ///< since a requested initGlobal, until first localized
   int spread_left_ = 0;         ///< a re-localization's uniform poses not drawn yet
   int weighings_ = 0;           ///< particles weighed in the last update
