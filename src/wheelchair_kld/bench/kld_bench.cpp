@@ -130,6 +130,7 @@ std::vector<StepRecord> runMrpt(const LocalizationMap& map, const std::vector<Dr
   // translation noise, no tempering).
   pf.m_options = wheelchair_kld::mrptFilterOptions(kp);
   const auto motion = wheelchair_kld::mrptThrunMotion(kp);
+  mrpt::random::CRandomGenerator motion_rng(1);
   std::vector<StepRecord> out;
   auto mrptPose = [](const Pose2D& p) { return mrpt::poses::CPose2D(p.x, p.y, p.yaw); };
   Pose2D last = drive.front().odom;
@@ -141,6 +142,11 @@ std::vector<StepRecord> runMrpt(const LocalizationMap& map, const std::vector<Dr
       mrpt::obs::CActionCollection actions;
       mrpt::obs::CActionRobotMovement2D act;
       act.computeFromOdometry(inc, motion);
+      // Our odometry model's samples, as replay --mrpt (MRPT's Thrun model decomposes a turn on
+      // the spot's creep into two half turns and spreads the position by its alfa4)
+      act.poseChange = wheelchair_kld::mrptOdometrySamples(
+          mrpt::math::TPose2D(last.x, last.y, last.yaw),
+          mrpt::math::TPose2D(s.odom.x, s.odom.y, s.odom.yaw), kp.motion, motion_rng);
       actions.insert(act);
       mrpt::obs::CSensoryFrame sf;
       sf.insert(toMrptObservation(s.scan, s.sensor_pose));

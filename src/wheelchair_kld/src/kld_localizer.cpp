@@ -68,17 +68,14 @@ void KldLocalizer::checkFit() {
       params_.relocalize_on_mean_fit
           ? fit_window_.size() == window && meanFit() < params_.fit_min_mean
           : params_.relocalize_updates > 0 && poor_fits_ >= params_.relocalize_updates;
-  if (lost) {
-    ++relocalizations_;
-    initGlobal(params_.relocalize_particles);
-    recovering_ = true;
-  }
+  if (lost) startRelocalization();
 }
 
-void KldLocalizer::initGlobal(int particles) {
-  const int n = params_.fixed_particles > 0 ? params_.fixed_particles
-                : particles > 0             ? particles
-                                            : params_.global_particles;
+bool KldLocalizer::updatesBounded() const {
+  return params_.update_max_particles > 0 && params_.fixed_particles == 0 && !global_search_;
+}
+
+void KldLocalizer::spreadUniform(int n) {
   particles_.assign(n, Particle());
   for (auto& p : particles_) {
     p.d = map_->sampleFreePose(rng_);
@@ -88,6 +85,29 @@ void KldLocalizer::initGlobal(int particles) {
   refine_left_ = params_.refine_steps;
   refine_done_ = 0;
   normalizeAndEstimate();
+}
+
+void KldLocalizer::initGlobal(int particles) {
+  const int n = params_.fixed_particles > 0 ? params_.fixed_particles
+                : particles > 0             ? particles
+                                            : params_.global_particles;
+  spreadUniform(n);
+  spread_left_ = 0;
+  global_search_ = true;
+}
+
+void KldLocalizer::startRelocalization() {
+  ++relocalizations_;
+  const int total =
+      params_.fixed_particles > 0 ? params_.fixed_particles : params_.relocalize_particles;
+  // Bounded: the first share now (weighed at the next update with as many fresh ones beside it),
+  // the rest at the following updates.
+  const int first = updatesBounded() && params_.fixed_particles == 0
+                        ? std::min(total, std::max(1, params_.update_max_particles / 4))
+                        : total;
+  spreadUniform(first);
+  spread_left_ = total - first;
+  recovering_ = true;
 }
 
 void KldLocalizer::initGaussian(const wheelchair_core::Pose2D& mean, const Eigen::Matrix3d& cov) {
@@ -104,6 +124,8 @@ void KldLocalizer::initGaussian(const wheelchair_core::Pose2D& mean, const Eigen
   }
   resetRecovery();
   refine_left_ = 0;
+  spread_left_ = 0;
+  global_search_ = false;
   normalizeAndEstimate();
 }
 
@@ -133,16 +155,34 @@ UpdateResult KldLocalizer::update(const wheelchair_core::Pose2D& odom_pose,
       turned < params_.update_min_a)
     return UpdateResult::kNoMotion;
   measurement_.setScan(scan, sensor_pose);
-  sampleStep(from, odom);
-  if (refine_left_ > 0) {
-    // A re-localization's cloud is refined over several updates (relocalize_refine_per_update
-    // passes each), so no update of a moving chair stalls the node; the first global
-    // localization (the chair waits for it) gets every pass at once.
-    const int steps =
-        recovering_ ? std::min(refine_left_, params_.relocalize_refine_per_update) : refine_left_;
-    refineAtFirstScan(measurement_, refine_done_, steps);
-    refine_left_ -= steps;
-    refine_done_ += steps;
+  weighings_ = 0;
+  // A re-localization's cloud is refined over several updates (relocalize_refine_per_update
+  // passes each), so no update of a moving chair stalls the node; the first global
+  // localization (the chair waits for it) gets every pass at once.
+  const int refine_now = refine_left_ <= 0 ? 0
+                         : recovering_
+                             ? std::min(refine_left_, params_.relocalize_refine_per_update)
+                             : refine_left_;
+  // After a re-localization the set stays within relocalize_particles until localized again:
+  // the spread set would otherwise ask for M_max and stall the node for seconds.
+  int set_max = params_.fixed_particles > 0 ? params_.fixed_particles
+                : recovering_
+                    ? std::min(params_.max_particles,
+                               std::max(params_.min_particles, params_.relocalize_particles))
+                    : params_.max_particles;
+  int fresh = spread_left_;
+  if (updatesBounded()) {
+    // update_max_particles weighings: the set and its refinement passes; of the set, half at
+    // most for a re-localization's next uniform poses.
+    set_max = std::min(set_max, params_.update_max_particles / (1 + refine_now));
+    fresh = std::min(fresh, set_max / 2);
+  }
+  spread_left_ -= fresh;
+  sampleStep(from, odom, set_max - fresh, fresh);
+  if (refine_now > 0) {
+    refineAtFirstScan(measurement_, refine_done_, refine_now);
+    refine_left_ -= refine_now;
+    refine_done_ += refine_now;
   }
   last_odom_ = odom;
   pending_first_update_ = false;
@@ -160,12 +200,15 @@ UpdateResult KldLocalizer::update(const wheelchair_core::Pose2D& odom_pose,
   inliers_ = inlierShare(fit_, params_.fit_max_short_share);
   const int relocalizations_before = relocalizations_;
   checkFit();
-  if (recovering_ && relocalizations_ == relocalizations_before && status().localized())
+  if (relocalizations_ == relocalizations_before && status().localized()) {
     recovering_ = false;
+    global_search_ = false;
+  }
   return UpdateResult::kUpdated;
 }
 
-void KldLocalizer::sampleStep(const TPose2D& odom_from, const TPose2D& odom_to) {
+void KldLocalizer::sampleStep(const TPose2D& odom_from, const TPose2D& odom_to, int m_max,
+                              int fresh) {
   const OdometryIncrement u = decomposeOdometry(odom_from, odom_to);
   // Cumulative weights of the previous set for drawing with probability w_{t-1} (line 6).
   std::vector<double> cumulative(particles_.size());
@@ -177,18 +220,11 @@ void KldLocalizer::sampleStep(const TPose2D& odom_from, const TPose2D& odom_to) 
                             ? std::max(0.0, 1.0 - w_fast_ / (params_.recovery_ratio * w_slow_))
                             : 0.0;
   const bool fixed = params_.fixed_particles > 0;
-  const int m_min = fixed ? params_.fixed_particles : params_.min_particles;
-  // After a re-localization the set stays within relocalize_particles until localized again:
-  // the spread set would otherwise ask for M_max and stall the node for seconds.
-  const int m_max = fixed ? params_.fixed_particles
-                    : recovering_
-                        ? std::min(params_.max_particles,
-                                   std::max(params_.min_particles, params_.relocalize_particles))
-                        : params_.max_particles;
+  const int m_min = std::min(m_max, fixed ? params_.fixed_particles : params_.min_particles);
   const int beams = std::max(1, measurement_.beamCount());
   PoseBins bins(params_.bin_xy, params_.bin_theta);
   std::vector<Particle> next;
-  next.reserve(std::min<size_t>(m_max, 4 * particles_.size() + m_min));
+  next.reserve(std::min<size_t>(m_max, 4 * particles_.size() + m_min) + fresh);
   double m_x = 0, w_sum = 0, log_max = -1e300;
   double stratum = rng_.drawUniform(0.0, 1.0);
   int drawn = 0;
@@ -218,6 +254,16 @@ void KldLocalizer::sampleStep(const TPose2D& odom_from, const TPose2D& odom_to) 
     if (!fixed && bins.insert(p.d))                                 // lines 10-12
       m_x = klBound(bins.count(), params_.epsilon, params_.delta);  // line 14
   }
+  // A spread re-localization's next uniform poses, weighed beside the survivors of the earlier
+  // ones (not in the augmented-MCL averages, as the injected poses).
+  for (int k = 0; k < fresh; ++k) {
+    Particle p;
+    p.d = map_->sampleFreePose(rng_);
+    p.log_w = measurement_.logLikelihood(p.d);
+    log_max = std::max(log_max, p.log_w);
+    next.push_back(p);
+  }
+  weighings_ += static_cast<int>(next.size());
   particles_.swap(next);
   for (auto& p : particles_) p.log_w -= log_max;  // rescale before normalizing
   temperWeights();
@@ -258,6 +304,7 @@ void KldLocalizer::refineAtFirstScan(const MeasurementModel& model, int first, i
       p.log_w = model.logLikelihood(p.d);
       log_max = std::max(log_max, p.log_w);
     }
+    weighings_ += static_cast<int>(next.size());
     for (auto& p : next) p.log_w -= log_max;
     particles_.swap(next);
     temperWeights();

@@ -69,7 +69,9 @@ std::string KldParams::validate() const {
       .check(relocalize_min_echoes >= 1, "relocalize_min_echoes must be at least 1")
       .check(relocalize_updates >= 0, "relocalize_updates must not be negative (0: off)")
       .check(relocalize_particles >= 1, "relocalize_particles must be at least 1")
-      .check(relocalize_refine_per_update >= 1, "relocalize_refine_per_update must be at least 1")
+      .check(relocalize_refine_per_update >= 0, "relocalize_refine_per_update must not be negative")
+      .check(update_max_particles == 0 || update_max_particles >= 2 * min_particles,
+             "update_max_particles must be 0 (unbounded) or at least twice min_particles")
       .positive("peak_max_xy", peak_max_xy)
       .positive("peak_max_theta", peak_max_theta);
   for (const std::string& nested : {motion.validate(), measurement.validate()})
@@ -115,6 +117,7 @@ void readKldParams(wheelchair_core::ConfigReader& r, KldParams& p) {
   r.read("relocalize_on_mean_fit", p.relocalize_on_mean_fit);
   r.read("relocalize_particles", p.relocalize_particles);
   r.read("relocalize_refine_per_update", p.relocalize_refine_per_update);
+  r.read("update_max_particles", p.update_max_particles);
   r.read("peak_estimate", p.peak_estimate);
   r.read("peak_max_xy", p.peak_max_xy);
   r.read("peak_max_theta", p.peak_max_theta);

@@ -1,4 +1,5 @@
 #include <wheelchair_kld/mrpt_equivalent.h>
+#include <wheelchair_kld/odometry_motion_model.h>
 
 #include <cmath>
 
@@ -24,6 +25,20 @@ mrpt::obs::CActionRobotMovement2D::TMotionModelOptions mrptThrunMotion(const Kld
   motion.thrunModel.additional_std_XY = static_cast<float>(mn.min_xy_std);
   motion.thrunModel.additional_std_phi = static_cast<float>(mn.min_theta_std);
   return motion;
+}
+
+mrpt::poses::CPosePDFParticles::Ptr mrptOdometrySamples(const mrpt::math::TPose2D& from,
+                                                        const mrpt::math::TPose2D& to,
+                                                        const MotionNoise& noise,
+                                                        mrpt::random::CRandomGenerator& rng,
+                                                        size_t n) {
+  const OdometryIncrement u = decomposeOdometry(from, to);
+  auto samples = mrpt::poses::CPosePDFParticles::Create(n);
+  for (auto& p : samples->m_particles) {
+    p.d = sampleMotionModel(u, mrpt::math::TPose2D(0, 0, 0), noise, rng);
+    p.log_w = -std::log(static_cast<double>(n));
+  }
+  return samples;
 }
 
 }  // namespace wheelchair_kld

@@ -278,22 +278,16 @@ class MrptKld {
     first_ = false;
     return true;
   }
-  /// The increment's distribution as samples of our odometry model (Thrun's Table 5.6 with a
-  /// backwards motion kept as such and a turn on the spot's few-mm creep adding no direction
-  /// noise). MRPT's own Thrun model decomposes a 2 cm backwards creep during a turn on the spot
-  /// as a 163 deg turn, 2 cm forward and a -170 deg turn: its alfa4 then spreads the position by
-  /// ~0.8 m std, and the 200 particles lose the Intel track within 3 updates.
+  /// The increment's distribution as samples of our odometry model (mrpt_equivalent.h). MRPT's
+  /// own Thrun model decomposes a 2 cm backwards creep during a turn on the spot as a 163 deg
+  /// turn, 2 cm forward and a -170 deg turn: its alfa4 then spreads the position by ~0.8 m std,
+  /// and the 200 particles lose the Intel track within 3 updates (--mrpt-thrun: 39 m RMS).
   mrpt::poses::CPosePDFParticles::Ptr ourMotionSamples(const Pose2D& odom) const {
-    const auto u =
-        wheelchair_kld::decomposeOdometry(mrpt::math::TPose2D(last_.x(), last_.y(), last_.phi()),
-                                          mrpt::math::TPose2D(odom.x, odom.y, odom.yaw));
-    auto samples = mrpt::poses::CPosePDFParticles::Create(kMotionSamples);
-    auto& rng = mrpt::random::getRandomGenerator();
-    for (auto& p : samples->m_particles)
-      p.d = wheelchair_kld::sampleMotionModel(u, mrpt::math::TPose2D(0, 0, 0), kp_.motion, rng);
-    return samples;
+    return wheelchair_kld::mrptOdometrySamples(
+        mrpt::math::TPose2D(last_.x(), last_.y(), last_.phi()),
+        mrpt::math::TPose2D(odom.x, odom.y, odom.yaw), kp_.motion,
+        mrpt::random::getRandomGenerator());
   }
-  static constexpr size_t kMotionSamples = 1000;
 
   Pose2D mean() const {
     mrpt::poses::CPose2D m;

@@ -53,6 +53,16 @@ TEST(KldParams, TheRelocalizationRuleIsParameterized) {
   EXPECT_NE(errorOf("{fit_beam_step: 0}").find("fit_beam_step"), std::string::npos);
 }
 
+// The per-update bound is a key, 0 turns it off, and one below twice min_particles is refused.
+TEST(KldParams, TheUpdateBoundIsAParameter) {
+  EXPECT_EQ(load("{update_max_particles: 8000}").filter.update_max_particles, 8000);
+  EXPECT_EQ(load("{update_max_particles: 0}").filter.update_max_particles, 0);
+  EXPECT_EQ(load("{relocalize_refine_per_update: 0}").filter.relocalize_refine_per_update, 0);
+  EXPECT_NE(errorOf("{update_max_particles: 300}").find("update_max_particles"), std::string::npos);
+  EXPECT_NE(errorOf("{relocalize_refine_per_update: -1}").find("relocalize_refine_per_update"),
+            std::string::npos);
+}
+
 TEST(KldParams, EveryThresholdIsAParameter) {
   const LocalizerNodeConfig c = load(
       "{fit_min_mean: 0.7, fit_window: 20, kld_epsilon: 0.1, recovery_alpha_slow: 0.002,"

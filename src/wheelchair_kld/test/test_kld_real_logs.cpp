@@ -56,6 +56,9 @@ struct Replay {
   size_t matched = 0;
   /// After the splice: updates until "not localized", until the re-localization (-1: none).
   int noticed = -1, relocalized_at = -1;
+  int max_weighings = 0;  ///< most particles weighed in one update after the first
+  /// Largest position error at a reference more than 30 updates after the splice.
+  double max_error_after = 0;
 };
 
 /// The raw log through the filter from the first reference pose (10 cm / 3 deg); with
@@ -78,8 +81,11 @@ Replay replay(const std::vector<LogScan>& raw, const std::string& reference_log,
       filter.initGaussian(ref->laser_pose, Eigen::Vector3d(0.01, 0.01, 0.0027).asDiagonal());
       started = true;
     }
+    const bool first_update = !r.matched && updates_after == 0;
     const bool updated =
         filter.update(scans[i].odom_pose, scans[i].scan, Pose2D{}) == UpdateResult::kUpdated;
+    if (updated && !first_update)
+      r.max_weighings = std::max(r.max_weighings, filter.lastUpdateWeighings());
     if (kidnap_at >= 0 && static_cast<long>(i) == kidnap_at)
       relocs_before = filter.relocalizations();
     if (kidnap_at >= 0 && static_cast<long>(i) > kidnap_at && updated) {
@@ -92,6 +98,9 @@ Replay replay(const std::vector<LogScan>& raw, const std::string& reference_log,
     const Pose2D& e = filter.estimate().mean;
     sum_xy += std::pow(e.x - ref->laser_pose.x, 2) + std::pow(e.y - ref->laser_pose.y, 2);
     sum_th += std::pow(wheelchair_core::angleDifference(e.yaw, ref->laser_pose.yaw), 2);
+    if (kidnap_at >= 0 && updates_after > 30)
+      r.max_error_after =
+          std::max(r.max_error_after, std::hypot(e.x - ref->laser_pose.x, e.y - ref->laser_pose.y));
     ++r.matched;
   }
   r.relocalizations = filter.relocalizations();
@@ -177,6 +186,27 @@ TEST(RealLogs, Fr101RawLogTracksItsCorrectedPoses) {
   EXPECT_EQ(r.matched, 292u);
   EXPECT_LT(r.position_rms, 0.05);
   EXPECT_LT(r.heading_rms, 0.6 * M_PI / 180);
+}
+
+// FR101 with a kidnapping spliced in (scan 1500, then 3000 on): noticed at once, and while lost
+// no update weighs more than update_max_particles (unbounded the set grew to 100000: 160-274 ms
+// of CPU per update against the 0.21 s scan period); the pose is found again.
+TEST(RealLogs, AKidnappingSplicedIntoFr101IsNoticedAndEveryUpdateStaysWithinTheBound) {
+  const std::string raw = kData + "/fr101/fr101.carmen.log.gz";
+  const std::string corrected = kData + "/fr101/fr101.carmen.gfs.log.gz";
+  if (!haveData({raw, corrected}))
+    GTEST_SKIP() << "no real logs at " << kData << " (../shared/data beside the repository)";
+  const KldParams params;
+  const auto map = buildMap(corrected, params);
+  const Replay r = replay(readLog(raw), corrected, map, params, 1500, 3000);
+  std::cout << "FR101 splice 1500 -> 3000: noticed at update " << r.noticed << ", at most "
+            << r.max_weighings << " particles weighed per update, largest error after 30 updates "
+            << r.max_error_after << " m\n";
+  EXPECT_GE(r.noticed, 1);
+  EXPECT_LE(r.noticed, 2);
+  EXPECT_LE(r.max_weighings, params.update_max_particles);
+  EXPECT_GT(r.max_weighings, 5000) << "the bound was never approached: not a test of it";
+  EXPECT_LT(r.max_error_after, 0.5);
 }
 
 }  // namespace

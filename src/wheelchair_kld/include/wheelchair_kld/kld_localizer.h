@@ -69,13 +69,27 @@ class KldLocalizer {
   double meanFit() const;
   /// Global re-localizations triggered by a persistent misfit so far.
   int relocalizations() const { return relocalizations_; }
+  /// Particles weighed by the scan in the last update (sampling loop, a re-localization's
+  /// uniform poses, refinement passes): the work update_max_particles bounds.
+  int lastUpdateWeighings() const { return weighings_; }
+  /// Whether update_max_particles bounds the updates now (not in a requested global
+  /// localization that has not localized yet, not fixed-size MCL).
+  bool updatesBounded() const;
   const KldParams& params() const { return params_; }
   const LocalizationMap& map() const { return *map_; }
 
  private:
   /// The sampling loop of Algorithm 1: draws, predicts, weighs until M >= max(M_x, M_min)
   /// (bounded by M_max), or exactly fixed_particles in fixed-size mode.
-  void sampleStep(const mrpt::math::TPose2D& odom_from, const mrpt::math::TPose2D& odom_to);
+  /// `m_max`: the most particles the loop draws; `fresh`: uniform poses added after the loop
+  /// and weighed too (a re-localization spread over updates).
+  void sampleStep(const mrpt::math::TPose2D& odom_from, const mrpt::math::TPose2D& odom_to,
+                  int m_max, int fresh);
+  /// Starts a global re-localization: relocalize_particles uniform poses, all at once or, when
+  /// the updates are bounded, spread over the following updates.
+  void startRelocalization();
+  /// `n` poses uniform over the known-free space, equally weighted.
+  void spreadUniform(int n);
   /// Re-applies the current scan with kernel-jittered redraws: `steps` passes from pass `first`
   /// of refine_steps (the kernel halves at every pass), after initGlobal.
   void refineAtFirstScan(const MeasurementModel& model, int first, int steps);
@@ -110,8 +124,10 @@ class KldLocalizer {
   int relocalizations_ = 0;
   MeasurementModel::FitCounts fit_;
   int poor_fits_ = 0;
-  bool recovering_ = false;  ///< since a re-localization, until localized again  ///< consecutive
-                             ///< updates below relocalize_max_inliers
+  bool recovering_ = false;     ///< since a re-localization, until localized again
+  bool global_search_ = false;  ///< since a requested initGlobal, until first localized
+  int spread_left_ = 0;         ///< a re-localization's uniform poses not drawn yet
+  int weighings_ = 0;           ///< particles weighed in the last update
 };
 
 }  // namespace wheelchair_kld

@@ -145,6 +145,19 @@ struct KldParams {
   /// per update (the first global localization does them all at its first scan): with all 3 at
   /// once the update after a re-localization took 160-250 ms of CPU on FR101 (one scan period).
   int relocalize_refine_per_update = 1;
+  /// Bound on the work of one update once the filter is not in a requested global localization
+  /// (the first one, which the chair waits for standing, is exempt until it first localizes):
+  /// no update weighs more than this many particles (the sampling loop, a re-localization's
+  /// uniform poses and its refinement passes together), so no update of a moving chair stalls
+  /// the node. While the scans no longer match (augmented MCL injects poses) the set stays within
+  /// it, and a re-localization's relocalize_particles uniform poses are spread over several
+  /// updates, half the set each time, beside the survivors of the earlier ones. FR101 with a
+  /// kidnapping spliced in (replay): unbounded, the injected poses grew the set to max_particles
+  /// 100000 for 4 updates (160-274 ms CPU each against a 0.21 s scan period). Six splices into
+  /// Intel and FR101: 20000 re-localizes as unbounded does (same updates until back on the
+  /// reference) at CPU max 54 ms; 10000 (39 ms) came back later in two of them (FR101 2200->4000:
+  /// update 30 instead of 7). 0: unbounded.
+  int update_max_particles = 20000;
 
   /// The published estimate is the peak of the scan's likelihood (every fit_beam_step-th beam,
   /// untempered, likelihood field) searched from the dominant cluster's mean within peak_max_xy /
