@@ -46,6 +46,7 @@ import xmlrpc.client
 import rosgraph
 import rospy
 import rostest
+from diagnostic_msgs.msg import DiagnosticStatus
 from nav_msgs.msg import Path
 from nodelet.srv import NodeletUnload
 from rosgraph_msgs.msg import Log
@@ -296,6 +297,21 @@ class CommandPath(unittest.TestCase):
 
     def case_foreign_speed_limit(self):
         s = self.s
+        # The supervisor's own limit (its topic, from the chair process) and the limit the base
+        # driver holds (its permits carry it; ~status says which): the driver's is the
+        # supervisor's, never another node's.
+        own, held = [], []
+
+        def on_limit(msg, _=None):
+            if msg._connection_header.get("callerid") == "/wheelchair":
+                own.append(msg.data)
+
+        def on_status(msg):
+            held.extend(float(kv.value) for kv in msg.values
+                        if kv.key == "safety speed limit held [m/s]")
+
+        rospy.Subscriber("/safety/speed_limit", Float64, on_limit, queue_size=100)
+        rospy.Subscriber("/base_driver/status", DiagnosticStatus, on_status, queue_size=100)
         s.start_driving(self, START, GOAL, 1.0)
         me = rospy.get_name()
         pub = rospy.Publisher("/safety/speed_limit", Float64, queue_size=10, tcp_nodelay=True)
@@ -320,6 +336,14 @@ class CommandPath(unittest.TestCase):
         self.assertLess(fastest, 0.85, "another node's limit sped the chair up")
         self.assertTrue(s.wait(lambda: self.reported("/safety/speed_limit", me, "refused"), 10.0),
                         "the foreign limit was not reported: %s" % self.errors[-5:])
+        driving = [h for h in held if h < 1e9]
+        if any(x < 1e9 for x in own):  # the field limited the drive: the driver held it too
+            self.assertTrue(driving, "the driver never held the supervisor's limit: %s" % held)
+        if own:  # another node's crawl (0.05 m/s) is no limit of the driver's
+            self.assertGreaterEqual(min(held), min(own) - 1e-3, "the driver held another node's "
+                                    "limit: %s (the supervisor's %s)" % (min(held), min(own)))
+        self.figures.update({"driver_limit_mps": round(min(driving), 2) if driving else None,
+                             "supervisor_limit_mps": round(min(own), 2) if own else None})
         self.figures.update({"speed_mps": round(v0, 2), "slowest_mps": round(slowest, 2),
                              "fastest_mps": round(fastest, 2),
                              "travelled_m": round(s.travelled(t0), 3)})
