@@ -46,7 +46,6 @@ import xmlrpc.client
 import rosgraph
 import rospy
 import rostest
-from diagnostic_msgs.msg import DiagnosticStatus
 from nav_msgs.msg import Path
 from nodelet.srv import NodeletUnload
 from rosgraph_msgs.msg import Log
@@ -77,6 +76,20 @@ def trigger_class():
         _response_class = res
 
     return Trigger
+
+
+def diagnostic_status_class():
+    """diagnostic_msgs/DiagnosticStatus (no Python bindings on Debian either), generated from its
+    definition, md5 '*' (roscpp's publishers accept it)."""
+    import genpy.dynamic
+
+    text = ("byte OK=0\nbyte WARN=1\nbyte ERROR=2\nbyte STALE=3\nbyte level\nstring name\n"
+            "string message\nstring hardware_id\nKeyValue[] values\n" + "=" * 80 +
+            "\nMSG: diagnostic_msgs/KeyValue\nstring key\nstring value\n")
+    cls = genpy.dynamic.generate_dynamic("diagnostic_msgs/DiagnosticStatus", text)[
+        "diagnostic_msgs/DiagnosticStatus"]
+    cls._md5sum = "*"
+    return cls
 
 
 def pid_of(node):
@@ -311,7 +324,8 @@ class CommandPath(unittest.TestCase):
                         if kv.key == "safety speed limit held [m/s]")
 
         rospy.Subscriber("/safety/speed_limit", Float64, on_limit, queue_size=100)
-        rospy.Subscriber("/base_driver/status", DiagnosticStatus, on_status, queue_size=100)
+        rospy.Subscriber("/base_driver/status", diagnostic_status_class(), on_status,
+                         queue_size=100)
         s.start_driving(self, START, GOAL, 1.0)
         me = rospy.get_name()
         pub = rospy.Publisher("/safety/speed_limit", Float64, queue_size=10, tcp_nodelay=True)
