@@ -78,6 +78,20 @@ def trigger_class():
     return Trigger
 
 
+def diagnostic_status_class():
+    """diagnostic_msgs/DiagnosticStatus (no Python bindings on Debian either), generated from its
+    definition, md5 '*' (roscpp's publishers accept it)."""
+    import genpy.dynamic
+
+    text = ("byte OK=0\nbyte WARN=1\nbyte ERROR=2\nbyte STALE=3\nbyte level\nstring name\n"
+            "string message\nstring hardware_id\nKeyValue[] values\n" + "=" * 80 +
+            "\nMSG: diagnostic_msgs/KeyValue\nstring key\nstring value\n")
+    cls = genpy.dynamic.generate_dynamic("diagnostic_msgs/DiagnosticStatus", text)[
+        "diagnostic_msgs/DiagnosticStatus"]
+    cls._md5sum = "*"
+    return cls
+
+
 def pid_of(node):
     """The process id of a ROS node (its XML-RPC getPid)."""
     master = rosgraph.Master("/test_command_path")
@@ -296,6 +310,22 @@ class CommandPath(unittest.TestCase):
 
     def case_foreign_speed_limit(self):
         s = self.s
+        # The supervisor's own limit (its topic, from the chair process) and the limit the base
+        # driver holds (its permits carry it; ~status says which): the driver's is the
+        # supervisor's, never another node's.
+        own, held = [], []
+
+        def on_limit(msg, _=None):
+            if msg._connection_header.get("callerid") == "/wheelchair":
+                own.append(msg.data)
+
+        def on_status(msg):
+            held.extend(float(kv.value) for kv in msg.values
+                        if kv.key == "safety speed limit held [m/s]")
+
+        rospy.Subscriber("/safety/speed_limit", Float64, on_limit, queue_size=100)
+        rospy.Subscriber("/base_driver/status", diagnostic_status_class(), on_status,
+                         queue_size=100)
         s.start_driving(self, START, GOAL, 1.0)
         me = rospy.get_name()
         pub = rospy.Publisher("/safety/speed_limit", Float64, queue_size=10, tcp_nodelay=True)
@@ -320,6 +350,14 @@ class CommandPath(unittest.TestCase):
         self.assertLess(fastest, 0.85, "another node's limit sped the chair up")
         self.assertTrue(s.wait(lambda: self.reported("/safety/speed_limit", me, "refused"), 10.0),
                         "the foreign limit was not reported: %s" % self.errors[-5:])
+        driving = [h for h in held if h < 1e9]
+        if any(x < 1e9 for x in own):  # the field limited the drive: the driver held it too
+            self.assertTrue(driving, "the driver never held the supervisor's limit: %s" % held)
+        if own:  # another node's crawl (0.05 m/s) is no limit of the driver's
+            self.assertGreaterEqual(min(held), min(own) - 1e-3, "the driver held another node's "
+                                    "limit: %s (the supervisor's %s)" % (min(held), min(own)))
+        self.figures.update({"driver_limit_mps": round(min(driving), 2) if driving else None,
+                             "supervisor_limit_mps": round(min(own), 2) if own else None})
         self.figures.update({"speed_mps": round(v0, 2), "slowest_mps": round(slowest, 2),
                              "fastest_mps": round(fastest, 2),
                              "travelled_m": round(s.travelled(t0), 3)})

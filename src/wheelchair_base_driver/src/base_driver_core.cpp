@@ -1,6 +1,7 @@
 #include <wheelchair_base_driver/base_driver_core.h>
 #include <wheelchair_can/can_error.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -16,6 +17,9 @@ namespace {
 constexpr double kScheduleSlack = 1e-3;    ///< [s] timer jitter tolerated by periodic frames
 constexpr double kFutureTolerance = 0.01;  ///< [s] a stamp this far ahead is still "now"
 constexpr double kEncoderFresh = 0.05;     ///< [s] encoder frames (100 Hz) newer than this flow
+/// [s] over a speed limit this long latches: one encoder interval can show a spike when frames
+/// come in a burst on a loaded PC (3.05 m/s seen in the one-switch system test at a true 0.7 m/s).
+constexpr double kOverspeedTime = 0.1;
 /// MC fault bits that are its watchdogs: it braked because commands came late or not at all.
 constexpr std::uint16_t kWatchdogFaults = protocol::kFaultCommandTimeout |
                                           protocol::kFaultDriverHeartbeatLost |
@@ -130,6 +134,16 @@ const char* latchCauseName(LatchCause c) {
   return "?";
 }
 
+double speedEnvelope(double envelope, double speed, double decel, double dt) {
+  return std::max(std::abs(speed), envelope - decel * dt);
+}
+
+double heldSpeedLimit(double held, double limit, double envelope, double ceiling, double decel,
+                      double dt) {
+  if (limit >= held) return limit;
+  return std::max(limit, std::min({held - decel * dt, envelope, ceiling}));
+}
+
 BaseDriverCore::BaseDriverCore(const DriverConfig& config, wheelchair_can::CanTransport& transport)
     : config_(config), transport_(transport), odometry_(config.geometry), wheel_check_(config) {
   const std::string problem = config_.validate();
@@ -179,7 +193,7 @@ TorqueVerdict BaseDriverCore::onCommand(const DriveInput& c, double now) {
 }
 
 void BaseDriverCore::onPermit(std::uint64_t sequence, std::uint64_t session, double stamp,
-                              bool stop, double now) {
+                              bool stop, double now, double speed_limit) {
   const bool replayed = has_permit_ && session == permit_session_ && sequence <= permit_sequence_;
   if (replayed || !std::isfinite(stamp) || now - stamp >= config_.permit_timeout ||
       stamp - now > kFutureTolerance) {
@@ -191,6 +205,7 @@ void BaseDriverCore::onPermit(std::uint64_t sequence, std::uint64_t session, dou
   permit_session_ = session;
   permit_sequence_ = sequence;
   permit_time_ = stamp;
+  permit_limit_ = speed_limit >= 0.0 ? speed_limit : 0.0;  // NaN or negative: no motion
   if (stop && !permit_stop_) permit_stop_since_ = now;
   if (!stop && permit_stop_) {
     block_time_ = now;  // the stop lifted: motion only on a command decided after it
@@ -320,22 +335,48 @@ void BaseDriverCore::handleEncoder(const protocol::EncoderCounts& counts, double
   wheel_check_.onEncoder(stamp, o.left_angle, o.right_angle);
 }
 
+double BaseDriverCore::speedCut() const {
+  return std::min(config_.max_speed, held_limit_ + config_.speed_limit_tolerance);
+}
+
+void BaseDriverCore::holdSpeedLimit(double now) {
+  const double dt = std::isfinite(held_limit_time_) ? std::max(0.0, now - held_limit_time_) : 0.0;
+  const double v = odometry_.state().v, decel = config_.speed_limit_decel;
+  held_limit_time_ = now;
+  if (!isMoving(state_)) {  // braked: nothing to slow down, the limit holds as it is
+    speed_envelope_ = std::abs(v);
+    held_limit_ = permit_limit_;
+    return;
+  }
+  speed_envelope_ = speedEnvelope(speed_envelope_, v, decel, dt);
+  held_limit_ = wheelchair_base_driver::heldSpeedLimit(held_limit_, permit_limit_, speed_envelope_,
+                                                       config_.max_speed, decel, dt);
+}
+
 void BaseDriverCore::checkMotion(double now) {
   const OdometryState& o = odometry_.state();
   if (!isMoving(state_)) {
     // Not driving: a wheel standing still now says nothing about its encoder later.
     wheel_check_.reset(now, o.left_angle, o.right_angle);
-    overspeed_since_ = now;
+    overspeed_since_ = limit_overspeed_since_ = now;
     return;
   }
-  // Over the limit for kOverspeedTime: one encoder interval can show a spike when frames come in
-  // a burst on a loaded PC (3.05 m/s seen in the one-switch system test at a true 0.7 m/s).
-  constexpr double kOverspeedTime = 0.1;  // [s]
-  if (std::abs(o.v) <= config_.max_speed) overspeed_since_ = now;
+  const double speed = std::abs(o.v);
+  if (speed <= config_.max_speed) overspeed_since_ = now;
   if (now - overspeed_since_ >= kOverspeedTime)
     latch(LatchCause::kOverspeed, false, "the chair went faster than its limit",
-          format("%.2f m/s measured by the encoders", std::abs(o.v)) +
+          format("%.2f m/s measured by the encoders", speed) +
               format(", limit %.2f m/s", config_.max_speed),
+          now);
+  // The supervisor's limit: its torque cut leaves the chair to roll, so a chair still well above
+  // the held limit did not slow down with it (its controller did not brake). Its own stop is
+  // already a stop.
+  if (permit_stop_ || speed <= held_limit_ + 2.0 * config_.speed_limit_tolerance)
+    limit_overspeed_since_ = now;
+  if (now - limit_overspeed_since_ >= kOverspeedTime)
+    latch(LatchCause::kOverspeed, false, "the chair went faster than its safety limit",
+          format("%.2f m/s measured by the encoders", speed) +
+              format(", the safety supervisor's limit held at %.2f m/s", held_limit_),
           now);
   if ((mc_faults_ & protocol::kReportOnlyFaults) != 0)
     latch(LatchCause::kCorruptStream, false, "the motor commands were garbled",
@@ -401,6 +442,7 @@ std::string BaseDriverCore::sentence() const {
 }
 
 void BaseDriverCore::update(double now, bool force_send) {
+  holdSpeedLimit(now);
   checkMotion(now);
   const DriverState raw = evaluate(now);
   DriverState next = raw;
@@ -432,7 +474,7 @@ void BaseDriverCore::update(double now, bool force_send) {
   }
   if (next != state_) force_send = true;  // a change of state goes on the bus at once
   // Crossing the speed limit goes on the bus at once too (the torque that speeds up is cut).
-  const bool at_limit = isMoving(next) && std::abs(odometry_.state().v) >= config_.max_speed;
+  const bool at_limit = isMoving(next) && std::abs(odometry_.state().v) >= speedCut();
   if (at_limit != at_speed_limit_) force_send = true;
   at_speed_limit_ = at_limit;
   if (isFault(next)) block_time_ = now;
@@ -448,8 +490,8 @@ void BaseDriverCore::sendCommand(double now) {
   command.left = drive ? message_left_ : 0.0;
   command.right = drive ? message_right_ : 0.0;
   const double v = odometry_.state().v;
-  if (drive && std::abs(v) >= config_.max_speed) {
-    // At the speed limit no wheel may push the chair faster.
+  if (drive && std::abs(v) >= speedCut()) {
+    // At the speed limit (max_speed, or the supervisor's as held) no wheel may push it faster.
     const auto cut = [v](double t) { return v > 0 ? std::min(t, 0.0) : std::max(t, 0.0); };
     command.left = cut(command.left);
     command.right = cut(command.right);

@@ -53,7 +53,8 @@ void BaseDriverNodelet::onInit() {
         {[this](const wheelchair_ros::DriveCommand& c) { return onCommand(c); },
          [this](const wheelchair_ros::DrivePermit& p) {
            std::lock_guard<std::mutex> lock(mutex_);
-           if (core_) core_->onPermit(p.sequence, p.session, p.stamp, p.stop, rosNow());
+           if (core_)
+             core_->onPermit(p.sequence, p.session, p.stamp, p.stop, rosNow(), p.speed_limit);
          },
          [this](const wheelchair_ros::RiderRelease& r) {
            std::lock_guard<std::mutex> lock(mutex_);
@@ -330,6 +331,7 @@ void BaseDriverNodelet::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s)
   s.add("permit losses", n.permit_losses);
   s.add("latched stops", n.latches);
   s.add("speed limited", n.speed_limited);
+  s.add("safety speed limit held [m/s]", core_->heldSpeedLimit());
 }
 
 }  // namespace wheelchair_base_driver

@@ -19,6 +19,8 @@ std::string DriverConfig::validate() const {
       .positive("controller_timeout", controller_timeout)
       .positive("max_speed", max_speed)
       .positive("permit_timeout", permit_timeout)
+      .positive("speed_limit_decel", speed_limit_decel)
+      .positive("speed_limit_tolerance", speed_limit_tolerance)
       .positive("stop_window", stop_window)
       .positive("controller_wall_timeout", controller_wall_timeout)
       .positive("encoder_check_time", encoder_check_time)
@@ -41,6 +43,8 @@ void readDriverConfig(wheelchair_core::ConfigReader& reader, DriverConfig& confi
   reader.read("command_timeout", config.command_timeout);
   reader.read("controller_timeout", config.controller_timeout);
   reader.read("permit_timeout", config.permit_timeout);
+  reader.read("speed_limit_decel", config.speed_limit_decel);
+  reader.read("speed_limit_tolerance", config.speed_limit_tolerance);
   reader.read("stop_window", config.stop_window);
   reader.read("controller_wall_timeout", config.controller_wall_timeout);
   reader.read("encoder_check_time", config.encoder_check_time);

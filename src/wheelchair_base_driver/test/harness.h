@@ -33,17 +33,18 @@ inline DriverConfig testDriverConfig() {
 }
 
 struct Harness {
-  Harness()
+  explicit Harness(const DriverConfig& config = testDriverConfig())
       : bus(FakeBus::create([this] { return now; })),
         driver_port(bus->connect("driver")),
         motor_port(bus->connect("motor")),
         monitor(bus->connect("monitor", 1u << 20)),
         plant(0.5, 0.2),
-        driver(testDriverConfig(), *driver_port),
+        driver(config, *driver_port),
         controller(EmulatedControllerConfig{}, *motor_port, plant) {}
 
   /// Advances time by `duration` in steps of `dt`, calling `each` (if any) before each step;
-  /// while `supervised`, a permit every 20 ms (the supervisor's check rate), with `stop`.
+  /// while `supervised`, a permit every 20 ms (the supervisor's check rate), with `stop` and
+  /// `speed_limit`.
   void run(double duration, double dt = 0.001, const std::function<void()>& each = {}) {
     const int steps = static_cast<int>(std::lround(duration / dt));
     for (int i = 0; i < steps; ++i) {
@@ -60,7 +61,7 @@ struct Harness {
   }
   /// The supervisor's permit, now.
   void permit() {
-    driver.onPermit(++permit_sequence, 1, now, stop, now);
+    driver.onPermit(++permit_sequence, 1, now, stop, now, speed_limit);
     last_permit_time = now;
   }
   /// A command of the chair's controller, decided now (or `age` seconds ago).
@@ -70,6 +71,7 @@ struct Harness {
 
   double now = 0.0;
   bool supervised = true, stop = false;
+  double speed_limit = INFINITY;  ///< [m/s] the supervisor's, carried by its permits
   double next_permit = 0.0, last_permit_time = -1.0;
   std::uint64_t permit_sequence = 0, command_sequence = 0;
   std::shared_ptr<FakeBus> bus;

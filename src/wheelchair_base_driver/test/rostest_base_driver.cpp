@@ -20,6 +20,7 @@
 #include <std_srvs/Trigger.h>
 #include <wheelchair_msgs/WheelTorques.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <functional>
@@ -61,6 +62,8 @@ class EmulatedChair {
   }
   double now() const { return now_.load(); }
   void setSupervised(bool supervised) { supervised_ = supervised; }
+  /// [m/s] the supervisor's speed limit its permits carry (+inf: none).
+  void setSpeedLimit(double limit) { speed_limit_ = limit; }
   template <typename F>
   auto with(F f) {  // runs f(controller, plant) under the loop's lock
     std::lock_guard<std::mutex> lock(mutex_);
@@ -94,6 +97,7 @@ class EmulatedChair {
         wheelchair_ros::DrivePermit permit;
         permit.sequence = ++permit_sequence_;
         permit.stamp = now_;
+        permit.speed_limit = speed_limit_;
         channel_->grant(permit);
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
@@ -101,6 +105,7 @@ class EmulatedChair {
   }
   std::atomic<double> now_{1.0};
   std::atomic<bool> running_{true}, supervised_{true};
+  std::atomic<double> speed_limit_{INFINITY};
   double next_permit_ = 0.0;
   std::uint64_t permit_sequence_ = 0;
   std::shared_ptr<wheelchair_ros::DriveChannel> channel_ = wheelchair_ros::driveChannel();
@@ -339,6 +344,35 @@ TEST_F(DriverNodeTest, NoPermitsBrakeWithinThePermitTimeout) {
   riderRelease();
   drive(0.2, 8.0, 8.0);
   EXPECT_FALSE(braked());
+}
+
+// The supervisor's speed limit reaches the driver with its permits (the drive channel) and the
+// driver holds it on the bus: the controller's 5 N m, which takes this plant past 1.2 m/s in
+// 3 s, leaves the chair near the 0.3 m/s limit.
+TEST_F(DriverNodeTest, TheSupervisorsSpeedLimitHoldsWhateverTheControllerCommands) {
+  chair->setSpeedLimit(0.3);
+  double fastest = 0.0;
+  const double end = chair->now() + 3.0;
+  double next = chair->now();
+  while (chair->now() < end && ros::ok()) {
+    if (chair->now() >= next) {
+      publish(5.0, 5.0);
+      next += 0.02;
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      fastest = std::max(fastest, std::abs(odom.twist.twist.linear.x));
+    }
+    ros::WallDuration(0.0005).sleep();
+  }
+  std::cerr << "fastest " << fastest << " m/s at the supervisor's 0.3 m/s\n";
+  EXPECT_GT(fastest, 0.3) << "the chair should reach the limit";
+  // The cut at 0.35 m/s, then at most 0.1 s at 1.7 m/s^2 before the torque is off on a loaded
+  // machine: well below what the push reaches without the limit.
+  EXPECT_LT(fastest, 0.3 + 0.05 + 0.17 + 0.03) << "the driver did not hold the limit";
+  chair->waitUntil([this] { return statusValue("safety speed limit held [m/s]") == "0.3"; }, 1.0);
+  EXPECT_EQ(statusValue("safety speed limit held [m/s]"), "0.3");
+  EXPECT_NE(statusValue("speed limited"), "0");
 }
 
 TEST_F(DriverNodeTest, NanTorquesAreRejected) {

@@ -9,8 +9,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
+#include <tuple>
 
 namespace wheelchair_base_driver {
 namespace {
@@ -267,6 +270,119 @@ TEST_F(CommandPathTest, TheDriverCutsTorqueAtMaxSpeedAndLatchesTheOverspeed) {
   EXPECT_EQ(h.driver.latchCause(), LatchCause::kOverspeed);
   EXPECT_EQ(h.driver.sentence(), "the chair went faster than its limit");
   EXPECT_GT(h.driver.counters().speed_limited, 0u);
+}
+
+// The supervisor's speed limit (the protective field scaled to speed), carried by its permit,
+// is the driver's too: the chair's controller cannot push the chair past it. The same push
+// without a limit takes the chair past 1 m/s (the test can fail).
+TEST_F(CommandPathTest, TheControllersTorqueCannotSpeedTheChairPastTheSupervisorsLimit) {
+  const auto fastest_with_limit = [](double limit) {
+    Harness chair;
+    chair.speed_limit = limit;
+    double fastest = 0.0;
+    chair.run(3.0, 0.001, [&] {  // 2 N m whatever the speed: about 0.7 m/s^2 on this plant
+      if (std::fmod(chair.now, 0.02) < 0.001) chair.torque(2.0, 2.0);
+      fastest = std::max(fastest, 0.17 * chair.plant.leftRate());
+    });
+    EXPECT_EQ(chair.driver.state(), DriverState::kDriving) << chair.driver.latchDetail();
+    EXPECT_DOUBLE_EQ(chair.driver.heldSpeedLimit(), limit);
+    return std::make_pair(fastest, chair.driver.counters().speed_limited);
+  };
+  const auto [unlimited, unlimited_cuts] = fastest_with_limit(INFINITY);
+  ASSERT_GT(unlimited, 1.0);
+  EXPECT_EQ(unlimited_cuts, 0u);
+  const auto [limited, cuts] = fastest_with_limit(0.5);
+  // The cut comes at the limit + speed_limit_tolerance, within two encoder frames and a command
+  // period (40 ms at 0.7 m/s^2).
+  EXPECT_LT(limited, 0.5 + 0.05 + 0.7 * 0.04) << "the driver did not hold 0.5 m/s";
+  EXPECT_GT(limited, 0.5) << "the chair should reach the limit";
+  EXPECT_GT(cuts, 0u);
+}
+
+// A falling limit is held as a ramp at speed_limit_decel from the last limit: a controller that
+// slows down with it drives on; one that keeps pushing (the cut leaves the chair to roll, slower
+// than the ramp) ends the drive in a latched controlled stop, told.
+TEST_F(CommandPathTest, AControllerThatDoesNotSlowDownWithAFallingLimitEndsTheDrive) {
+  const auto fall = [](bool follow) {
+    auto h = std::make_unique<Harness>();
+    h->speed_limit = 1.0;
+    Drive drive(*h);
+    drive.run(2.0, 2.0);
+    const double v0 = 0.17 * h->plant.leftRate();
+    EXPECT_GT(v0, 0.8);
+    EXPECT_LT(v0, 1.0 + 0.05 + 0.03);
+    EXPECT_EQ(h->driver.state(), DriverState::kDriving);
+    h->speed_limit = 0.2;
+    const double t0 = h->now;
+    double latched_at = -1.0, held_at_latch = -1.0, ramp_error = 0.0, over = 0.0;
+    double next = h->now;
+    h->run(3.0, 0.001, [&] {
+      const double t = h->now - t0;
+      const bool latched = h->driver.latchCause() != LatchCause::kNone;
+      // One permit period after the fall, the ramp from the speed then (at most 1.0) at
+      // 0.5 m/s^2 down to 0.2.
+      if (t > 0.021 && !latched)
+        ramp_error =
+            std::max(ramp_error, std::abs(h->driver.heldSpeedLimit() -
+                                          std::max(0.2, std::min(1.0, v0) - 0.5 * (t - 0.02))));
+      if (!latched) over = std::max(over, 0.17 * h->plant.leftRate() - h->driver.heldSpeedLimit());
+      if (latched_at < 0 && latched) {
+        latched_at = t;
+        held_at_latch = h->driver.heldSpeedLimit();
+      }
+      if (h->now < next - 1e-9) return;
+      next = h->now + 0.02;
+      const double rate = h->plant.leftRate();
+      if (latched) {  // the controlled stop
+        const bool at_rest = std::abs(rate) < 0.05;
+        const double brake = std::clamp(-2.0 * rate, -3.0, 3.0);
+        h->torque(at_rest ? 0.0 : brake, at_rest ? 0.0 : brake, at_rest);
+      } else if (follow) {  // towards the limit, about 1 m/s^2 at most
+        const double torque = std::clamp(4.0 * (0.2 / 0.17 - rate), -3.0, 2.0);
+        h->torque(torque, torque);
+      } else {
+        h->torque(2.0, 2.0);
+      }
+    });
+    EXPECT_LT(ramp_error, 0.021) << "the held limit is not the ramp";
+    return std::make_tuple(std::move(h), latched_at, held_at_latch, over);
+  };
+  {
+    auto [h, latched_at, held, over] = fall(true);
+    EXPECT_LT(latched_at, 0) << h->driver.latchDetail();
+    EXPECT_EQ(h->driver.state(), DriverState::kDriving);
+    EXPECT_LT(over, 0.05) << "a controller slowing down with the limit was cut";
+    EXPECT_NEAR(0.17 * h->plant.leftRate(), 0.2, 0.02);
+    EXPECT_DOUBLE_EQ(h->driver.heldSpeedLimit(), 0.2);
+  }
+  {
+    auto [h, latched_at, held, over] = fall(false);
+    ASSERT_GT(latched_at, 0) << "a controller pushing on past the limit was not stopped";
+    EXPECT_LT(latched_at, 1.0);
+    EXPECT_GT(held, 0.2) << "latched before the ramp reached the limit";
+    // Twice the tolerance, and the ramp's 0.5 m/s^2 for the 0.1 s over it before the latch.
+    EXPECT_LT(over, 2 * 0.05 + 0.5 * 0.1) << "the chair rolled on faster than the limit allows";
+    EXPECT_EQ(h->driver.latchCause(), LatchCause::kOverspeed);
+    EXPECT_EQ(h->driver.sentence(), "the chair went faster than its safety limit");
+    EXPECT_TRUE(h->plant.braked()) << "at rest after the controlled stop";
+  }
+}
+
+// The held limit, the functions alone: a rise at once; a fall no faster than the deceleration,
+// from the last held value or the chair's speed envelope if lower; the envelope follows a
+// higher speed at once and a lower one (a late encoder frame) only at the deceleration.
+TEST(HeldSpeedLimit, RisesAtOnceAndFallsAtTheDecelerationFromTheChairsSpeed) {
+  EXPECT_DOUBLE_EQ(heldSpeedLimit(0.3, 1.2, 0.3, 1.5, 0.5, 0.02), 1.2);
+  EXPECT_EQ(heldSpeedLimit(0.3, INFINITY, 0.3, 1.5, 0.5, 0.02), INFINITY);
+  EXPECT_DOUBLE_EQ(heldSpeedLimit(INFINITY, 0.3, 2.0, 1.5, 0.5, 0.02), 1.5);
+  EXPECT_DOUBLE_EQ(heldSpeedLimit(INFINITY, 0.3, 0.7, 1.5, 0.5, 0.02), 0.7);
+  EXPECT_DOUBLE_EQ(heldSpeedLimit(INFINITY, 0.3, 0.1, 1.5, 0.5, 0.02), 0.3);
+  EXPECT_DOUBLE_EQ(heldSpeedLimit(0.8, 0.3, 1.0, 1.5, 0.5, 0.02), 0.8 - 0.01);
+  EXPECT_DOUBLE_EQ(heldSpeedLimit(0.31, 0.3, 1.0, 1.5, 0.5, 0.1), 0.3);
+  EXPECT_DOUBLE_EQ(heldSpeedLimit(0.5, 0.0, 1.0, 1.5, 0.5, 2.0), 0.0);
+  EXPECT_DOUBLE_EQ(speedEnvelope(0.5, 0.9, 0.5, 0.01), 0.9);
+  EXPECT_DOUBLE_EQ(speedEnvelope(0.5, -0.9, 0.5, 0.01), 0.9);  // reversing
+  EXPECT_DOUBLE_EQ(speedEnvelope(0.9, 0.1, 0.5, 0.01), 0.9 - 0.005);
 }
 
 // ISO 7176-14 single fault: one wheel's encoder frozen while driving -> a latched stop within a

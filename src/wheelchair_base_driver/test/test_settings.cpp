@@ -50,6 +50,8 @@ TEST(Settings, TheDefaultsAreTheStructsAndTheChairs) {
   EXPECT_DOUBLE_EQ(s.driver.max_speed, 1.5);    // the chair's max_speed
   EXPECT_DOUBLE_EQ(s.driver.permit_timeout, 0.1);
   EXPECT_DOUBLE_EQ(s.driver.stop_window, 4.0);
+  EXPECT_DOUBLE_EQ(s.driver.speed_limit_decel, 0.5);
+  EXPECT_DOUBLE_EQ(s.driver.speed_limit_tolerance, 0.05);
   EXPECT_DOUBLE_EQ(s.driver.controller_wall_timeout, 1.0);
   EXPECT_EQ(s.odom_frame, "odom");
   EXPECT_EQ(s.base_frame, "base_link");
@@ -92,6 +94,10 @@ TEST(Settings, InvalidValuesAreRefused) {
   EXPECT_NE(errorOf("permit_timeout: 0").find("permit_timeout must be positive"),
             std::string::npos);
   EXPECT_NE(errorOf("max_speed: -1").find("max_speed"), std::string::npos);
+  EXPECT_NE(errorOf("speed_limit_decel: 0").find("speed_limit_decel must be positive"),
+            std::string::npos);
+  EXPECT_NE(errorOf("speed_limit_tolerance: -0.1").find("speed_limit_tolerance"),
+            std::string::npos);
 }
 
 }  // namespace

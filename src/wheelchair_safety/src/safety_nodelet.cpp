@@ -375,13 +375,15 @@ class SafetyNodelet : public nodelet::Nodelet {
                           wheelchair_ros::toPose2D(base_in_map.transform));
     const ros::Time now = ros::Time::now();
     wheelchair_msgs::SafetyStatus status = toSafetyStatus(supervisor_->check(now.toSec()), now);
-    publishSpeedLimit(supervisor_->speedLimit());
+    const SpeedLimit limit = supervisor_->speedLimit();
+    publishSpeedLimit(limit);
     if (status.reason == wheelchair_msgs::SafetyStatus::DRIVER_FAULT && !driver_sentence_.empty())
       status.sentence = driver_sentence_;  // e.g. "another program tried to drive the chair"
     wheelchair_ros::DrivePermit permit;
     permit.sequence = ++permit_sequence_;
     permit.stamp = now.toSec();
     permit.stop = status.stop;
+    permit.speed_limit = limit.speed;  // the driver holds it itself (the controller follows it)
     wheelchair_ros::SafetyHold hold;
     hold.stop = status.stop;
     hold.sentence = status.sentence;

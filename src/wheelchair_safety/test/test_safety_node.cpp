@@ -13,6 +13,7 @@
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
+#include <std_msgs/Float64.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_msgs/SafetyStatus.h>
@@ -203,6 +204,14 @@ TEST(SafetyNode, SupervisorInTheCommandPath) {
                                ++driver->releases;
                              }});
   World world;
+  std::mutex limit_mutex;
+  double topic_limit = NAN;  // the supervisor's /safety/speed_limit
+  ros::NodeHandle limit_nh;
+  ros::Subscriber limit_sub = limit_nh.subscribe<std_msgs::Float64>(
+      "safety/speed_limit", 5, [&](const std_msgs::Float64::ConstPtr& m) {
+        std::lock_guard<std::mutex> lock(limit_mutex);
+        topic_limit = m->data;
+      });
   ASSERT_TRUE(world.runUntil(15.0, true, false, false)) << "healthy data: " << world.status_;
 
   // A permit at the check rate (50 Hz; >= 30 in a second on a loaded machine), sequence
@@ -217,6 +226,13 @@ TEST(SafetyNode, SupervisorInTheCommandPath) {
   }
   EXPECT_FALSE(permits.back().permit.stop);
   EXPECT_NEAR(permits.back().permit.stamp, ros::Time::now().toSec(), 0.2);
+  // Each carries the supervisor's speed limit, the one it publishes (the driver holds it): the
+  // field ahead of a chair at rest in a free map allows driving.
+  EXPECT_GT(permits.back().permit.speed_limit, 0.5);
+  {
+    std::lock_guard<std::mutex> lock(limit_mutex);
+    EXPECT_EQ(permits.back().permit.speed_limit, topic_limit);
+  }
 
   // A silent laser: a stop, and the permits say so.
   ASSERT_TRUE(world.runUntil(5.0, false, false, true));
@@ -226,6 +242,7 @@ TEST(SafetyNode, SupervisorInTheCommandPath) {
   permits = driver->since(t);
   ASSERT_FALSE(permits.empty());
   EXPECT_TRUE(permits.back().permit.stop);
+  EXPECT_EQ(permits.back().permit.speed_limit, 0.0) << "a stop is a limit of 0";
 
   // Another node says "no stop" and re-sends the plan and a goal: the stop holds.
   ros::NodeHandle nh;

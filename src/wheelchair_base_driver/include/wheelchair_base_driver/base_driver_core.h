@@ -24,8 +24,11 @@
 // A latch that leaves the command path intact (foreign command, corrupted stream, overspeed) and
 // the supervisor's own stop (permit.stop) let the controller's controlled stop run for at most
 // stop_window seconds, then brake; the others brake at once. The driver also limits torque (a
-// larger one is rejected) and speed (torque that would speed the chair up beyond max_speed is
-// cut) itself.
+// larger one is rejected) and speed itself: torque that would speed the chair up beyond
+// max_speed, or beyond the supervisor's speed limit (carried by its permit: no fresh permit, no
+// limit to drive by, the brake) as heldSpeedLimit holds it + speed_limit_tolerance, is cut; a
+// chair that does not slow down with that limit (2 x the tolerance above it) latches an
+// overspeed too.
 #pragma once
 
 #include <wheelchair_base_driver/driver_config.h>
@@ -81,12 +84,25 @@ enum class LatchCause {
   kInterrupted,        ///< a fault began while driving (detail: which)
   kForeignCommand,     ///< a torque command from a publisher that is not the chair's controller
   kCorruptStream,      ///< bad command frames / undecodable protocol frames while driving
-  kOverspeed,          ///< faster than max_speed
+  kOverspeed,          ///< faster than max_speed, or than the supervisor's held speed limit
   kEncoderFault,       ///< a wheel does not count while the other turns under torque
   kWheelFault,         ///< a wheel does not turn under torque, or speeds up against it
   kControllerStalled,  ///< the MC silent for controller_wall_timeout of wall time while driving
 };
 const char* latchCauseName(LatchCause cause);
+
+/// The chair's speed as the held limit starts from it: the measured |speed| at once when higher,
+/// else falling no faster than `decel` [m/s^2] over `dt` [s] (a late encoder frame under load
+/// reads low for one interval: the envelope does not follow it down):
+/// envelope' = max(|speed|, envelope - decel dt).
+double speedEnvelope(double envelope, double speed, double decel, double dt);
+
+/// The supervisor's speed limit as the driver holds it while driving, advanced by `dt` [s]: a
+/// rise of `limit` at once; a fall no faster than `decel` [m/s^2], from the last held value or,
+/// if lower, the chair's speed envelope (or `ceiling`, the chair's max_speed):
+/// held' = max(limit, min(held - decel dt, envelope, ceiling)).
+double heldSpeedLimit(double held, double limit, double envelope, double ceiling, double decel,
+                      double dt);
 
 /// A command of the chair's own controller.
 struct DriveInput {
@@ -130,7 +146,7 @@ struct DriverCounters {
   std::uint64_t controller_faults = 0;  ///< transitions into kControllerFault
   std::uint64_t permit_losses = 0;      ///< transitions into kNoPermit
   std::uint64_t latches = 0;
-  std::uint64_t speed_limited = 0;  ///< commands whose torque was cut at max_speed
+  std::uint64_t speed_limited = 0;  ///< frames whose torque was cut at the speed limit
   std::uint64_t estops = 0;
 };
 
@@ -142,8 +158,10 @@ class BaseDriverCore {
   /// A command of the chair's own controller received at `now`; sends the resulting frame.
   TorqueVerdict onCommand(const DriveInput& command, double now);
   /// The supervisor's permit (DrivePermit): fresh for permit_timeout from `now` if its stamp is
-  /// not older than that and its sequence is above the last one of the same session.
-  void onPermit(std::uint64_t sequence, std::uint64_t session, double stamp, bool stop, double now);
+  /// not older than that and its sequence is above the last one of the same session. It carries
+  /// the supervisor's speed limit [m/s] (+inf: none; NaN or negative: 0).
+  void onPermit(std::uint64_t sequence, std::uint64_t session, double stamp, bool stop, double now,
+                double speed_limit = INFINITY);
   /// A torque command published by someone else (`who`): reported and braked on, latched.
   void onForeignCommand(const std::string& who, double now);
   void engageEstop(double now);
@@ -176,6 +194,11 @@ class BaseDriverCore {
   const std::string& lastRejection() const { return last_rejection_; }
   const std::string& latchDetail() const { return latch_.detail; }
   const DriverConfig& config() const { return config_; }
+  /// [m/s] the supervisor's speed limit as the driver holds it now (+inf: none; not driving:
+  /// the permit's limit itself, driving: heldSpeedLimit).
+  double heldSpeedLimit() const { return held_limit_; }
+  /// [m/s] faster than this, torque that speeds the chair up is cut (max_speed or the held limit).
+  double speedCut() const;
 
  private:
   struct Latch {
@@ -189,6 +212,7 @@ class BaseDriverCore {
   void latch(LatchCause cause, bool brake_now, const std::string& sentence,
              const std::string& detail, double now);
   void update(double now, bool force_send);
+  void holdSpeedLimit(double now);
   void checkMotion(double now);
   void sendCommand(double now);
   void sendHeartbeat();
@@ -219,6 +243,11 @@ class BaseDriverCore {
   bool permit_stop_ = false;
   double permit_stop_since_ = 0.0;
   std::uint64_t permit_session_ = 0, permit_sequence_ = 0;
+  double permit_limit_ = INFINITY;      ///< [m/s] the last fresh permit's speed limit
+  double held_limit_ = INFINITY;        ///< [m/s] that limit as held (heldSpeedLimit)
+  double held_limit_time_ = NAN;        ///< when held_limit_ was last advanced
+  double speed_envelope_ = 0.0;         ///< [m/s] speedEnvelope of the measured speed
+  double limit_overspeed_since_ = NAN;  ///< since when within the held limit + 2 tolerances
 
   bool has_heartbeat_ = false;
   double last_heartbeat_time_ = 0.0;

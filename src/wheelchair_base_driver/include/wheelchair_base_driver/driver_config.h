@@ -29,6 +29,13 @@ struct DriverConfig {
   double max_speed = 0.0;
   /// [s] a permit of the safety supervisor is fresh this long (its check period is 20 ms).
   double permit_timeout = 0.1;
+  /// [m/s^2] the supervisor's speed limit (carried by its permit) as the driver holds it: a rise
+  /// at once, a fall no faster than this from the speed at the fall (the controlled stop's
+  /// 0.5 m/s^2: the controller slows down with the limit, the driver does not jolt it).
+  double speed_limit_decel = 0.5;
+  /// [m/s] above the held limit by this much, torque that would speed the chair up is cut; by
+  /// twice this much for 0.1 s (it did not slow down with the limit): a latched stop.
+  double speed_limit_tolerance = 0.05;
   /// [s] the longest controlled stop the controller may run after a stop that leaves the command
   /// path intact (the supervisor's, a foreign command, a corrupted stream), then the brake: from
   /// 1.5 m/s at 0.5 m/s^2 with jerk-limited ramps about 3.5 s.
@@ -62,7 +69,8 @@ struct DriverConfig {
 };
 
 /// Keys: counts_per_rev, max_wheel_rate, max_torque, max_speed, command_rate [Hz]
-/// (1 / command_period), command_timeout, controller_timeout, permit_timeout, stop_window,
+/// (1 / command_period), command_timeout, controller_timeout, permit_timeout,
+/// speed_limit_decel, speed_limit_tolerance, stop_window,
 /// controller_wall_timeout, encoder_check_time, encoder_check_rate, encoder_check_angle,
 /// encoder_check_torque,
 /// stall_torque, stall_time. The wheel radius and half

@@ -19,6 +19,7 @@
 // and the supervisor report after unlocking).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -43,6 +44,10 @@ struct DrivePermit {
   double stamp = 0.0;          ///< [s, ROS time] when it was issued
   /// A stop is latched: only the controller's controlled stop may run, then the brake.
   bool stop = false;
+  /// [m/s] the supervisor's speed limit now (the protective field's, /safety/speed_limit's
+  /// value); +inf: none from the field. The driver holds it itself for as long as the permit is
+  /// fresh (a stale permit brakes: there is no stale limit to drive by).
+  double speed_limit = INFINITY;
   std::uint64_t session = 0;  ///< set by grant()
 };
 
