@@ -226,8 +226,10 @@ class Table2Runner:
         if not laser(False).success:
             raise RuntimeError("the simulator refused to switch the laser off")
         try:
-            self.wait_for("the supervisor's stop for the silent laser",
-                          lambda: self.latched_stop() is not None, wall_timeout)
+            # (wait_for holds self.lock while it asks: the status read directly)
+            self.wait_for("the supervisor's stop for the silent laser", lambda: self.safety
+                          is not None and self.safety.stop
+                          and self.safety.reason != SafetyStatus.NO_DATA, wall_timeout)
         finally:
             laser(True)
         self.sim_sleep(1.0)  # scans again: only the latch holds the stop
