@@ -100,6 +100,7 @@ class ControllerNodelet : public nodelet::Nodelet {
   std::uint64_t command_sequence_ = 0;
   double gap_timeout_ = 0.1, wall_gap_timeout_ = 0.5;
   std::atomic<int64_t>* cpu_ = nullptr;  ///< this nodelet's callback CPU (callback_cpu.h)
+  std::atomic<int64_t>* references_cpu_ = nullptr;  ///< the worker's (preparePath)
   ros::Time last_step_;
   ros::WallTime last_wall_step_;
 

@@ -62,6 +62,7 @@ ControllerNodelet::~ControllerNodelet() {
 
 void ControllerNodelet::onInit() {
   cpu_ = &wheelchair_core::callbackCpuTotal(getName());  // before any callback can run
+  references_cpu_ = &wheelchair_core::callbackCpuTotal(getName() + " (path references)");
   ros::NodeHandle& nh = getNodeHandle();
   // The chair's controller: the only one that commands the base driver (a second one in the
   // process is refused, before anything is set up).
@@ -140,7 +141,7 @@ void ControllerNodelet::buildReferences() {
     request_.reset();
     lock.unlock();
     const PreparedPath prepared = [&] {
-      const wheelchair_core::CallbackCpuScope cpu(cpu_);
+      const wheelchair_core::CallbackCpuScope cpu(references_cpu_);
       return preparePath(request.poses, chair_, tracker_->config(), request.initial_speed);
     }();
     lock.lock();
