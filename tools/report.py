@@ -50,6 +50,7 @@ import table2_stack  # noqa: E402
 from wheelchair_test.harness import Processes, start_master  # noqa: E402
 
 TRUTH_TOPIC, ESTIMATE_TOPIC = "/table2/truth_path", "/table2/estimate_path"
+RUNNER = "table2_report"  # this node: the HMI's go_to_caller in the bring-up copy (the rider)
 
 
 def rviz_config(out):
@@ -112,7 +113,8 @@ def run_protocol(args, out, logs):
         start_master(procs, rosout=True, use_sim_time=True, export=True)
         bringup_copy = table2_stack.start(
             procs, args.bringup or table2_stack.default_config(),
-            ROOT / "test" / "worlds" / "flat.yaml", args.speed, pairs[0]["start"], args.nice)
+            ROOT / "test" / "worlds" / "flat.yaml", args.speed, pairs[0]["start"], args.nice,
+            rider="/" + RUNNER)  # the runner releases a stop as the rider's display does
         if args.cpu_quota:
             from wheelchair_test.harness.cpu_quota import CpuQuota
 
@@ -120,7 +122,7 @@ def run_protocol(args, out, logs):
                              period_us=int(args.cpu_period_ms * 1000))
             print(f"chair process confined to {args.cpu_quota:g} % of one core "
                   f"(period {args.cpu_period_ms:g} ms)", flush=True)
-        rospy.init_node("table2_report", disable_signals=True)
+        rospy.init_node(RUNNER, disable_signals=True)
         runner = protocol.Table2Runner(wall_scale=args.wall_scale)
         runner.check_processes = procs.check
         runner.wait_ready()

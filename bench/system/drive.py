@@ -3,7 +3,9 @@
 the controller's goal_reached (or abort, collision, or the window), announcing "driving" when the
 controller starts to follow the plan (aligning/tracking). Prints one event per line
 on stdout ("<event> <wall time> <sim time> [detail]") for the measuring script to time its
-/proc samples against; the rider is wheelchair_test.harness's Rider."""
+/proc samples against; the rider is wheelchair_test.harness's Rider. With --cpu-topic (the chair
+process's ~callback_cpu: CPU seconds per nodelet so far) the latest totals follow the "driving"
+and the outcome event as a line "cpu <wall> <sim> <json>"."""
 import argparse
 import pathlib
 import sys
@@ -14,10 +16,18 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "test" / "s
 from wheelchair_test.harness import Rider, place  # noqa: E402
 
 import rospy  # noqa: E402
+from std_msgs.msg import String  # noqa: E402
+
+CPU = {}  # topic -> the latest totals (JSON text)
 
 
 def event(name, detail=""):
     print(f"{name} {time.time():.3f} {rospy.get_time():.3f} {detail}".rstrip(), flush=True)
+
+
+def cpu_event():
+    for topic, text in sorted(CPU.items()):
+        event("cpu", text)
 
 
 def main():
@@ -26,8 +36,11 @@ def main():
     parser.add_argument("--goal", default="kitchen_door")  # the demo's destination
     parser.add_argument("--window", type=float, default=30.0, help="wall seconds of driving at most")
     parser.add_argument("--ready-timeout", type=float, default=180.0)
+    parser.add_argument("--cpu-topic", nargs="*", default=[], help="chair processes' ~callback_cpu")
     args = parser.parse_args()
     rider = Rider("bench_system_rider")
+    for topic in args.cpu_topic:
+        rospy.Subscriber(topic, String, lambda m, t=topic: CPU.__setitem__(t, m.data), queue_size=1)
     why = rider.wait_ready(args.ready_timeout)
     if why:
         event("failed", why)
@@ -46,9 +59,11 @@ def main():
     rider.wait(lambda: rider.controller_says("aligning", since) or
                rider.controller_says("tracking", since) or rider.drive_outcome(since), args.window)
     if not rider.drive_outcome(since):
+        cpu_event()
         event("driving")
     rider.wait(lambda: rider.drive_outcome(since), args.window)
     outcome = rider.drive_outcome(since) or "window_end"
+    cpu_event()
     event(outcome, f"travelled {rider.travelled(since):.2f} m; " + rider.describe(since))
     return 0
 

@@ -22,7 +22,7 @@ from actionlib_msgs.msg import GoalID, GoalStatusArray
 from std_msgs.msg import Bool, String
 from wheelchair_msgs.msg import SafetyStatus
 from wheelchair_msgs.srv import GoToPlace
-from wheelchair_sim.srv import SetPose
+from wheelchair_sim.srv import EnableLaser, SetPose
 
 import table2_metrics as metrics
 
@@ -62,6 +62,11 @@ def load_pairs(path=os.path.join(HERE, "flat_pairs.yaml")):
         pairs.append({"index": i + 1, "name": p["name"], "via": p.get("via", ""),
                       "start": pose(p["start"]), "goal": pose(p["goal"])})
     return spec["world"], pairs
+
+
+def describe(stop):
+    """A SafetyStatus in words (None: no stop)."""
+    return "no stop" if stop is None else "%s (%s)" % (stop.sentence, stop.detail)
 
 
 ACTIVE = ("aligning", "tracking", "rotating_to_goal")
@@ -213,6 +218,22 @@ class Table2Runner:
         if s is None or not s.stop or s.reason == SafetyStatus.NO_DATA:
             return None
         return s
+
+    def latch_stop_by_laser_dropout(self, wall_timeout=30.0):
+        """A stop the supervisor latches (the simulator's laser off until it does, then on
+        again: the cause is gone, the latch holds). Returns the latched SafetyStatus."""
+        laser = rospy.ServiceProxy("/sim/enable_laser", EnableLaser)
+        if not laser(False).success:
+            raise RuntimeError("the simulator refused to switch the laser off")
+        try:
+            # (wait_for holds self.lock while it asks: the status read directly)
+            self.wait_for("the supervisor's stop for the silent laser", lambda: self.safety
+                          is not None and self.safety.stop
+                          and self.safety.reason != SafetyStatus.NO_DATA, wall_timeout)
+        finally:
+            laser(True)
+        self.sim_sleep(1.0)  # scans again: only the latch holds the stop
+        return self.latched_stop()
 
     def release_by_rider(self, wall_timeout=30.0):
         """Releases a latched stop the way the rider does: a destination through the HMI (its

@@ -5,6 +5,9 @@ Runs the pairs of flat_pairs.yaml selected by ~pairs (1-based indices, default a
 every run as JSON (~out, default next to the rostest's XML result, else $ROS_HOME), and checks:
 each goal reached (controller `goal_reached`, true final pose within 10 cm and 10 deg), no
 collision, and mean MSErc < 5.8 cm^2, mean MSEre < 11.2 cm^2 (the paper's Table 2 means).
+With ~latch_first (table2.test) a stop is first latched (laser dropout) and released the way
+the report releases one between runs (release_by_rider: this node is the HMI's go_to_caller,
+table2_stack.py --rider): the stop must be released and the pairs then run as usual.
 """
 import json
 import math
@@ -36,6 +39,7 @@ def results_path():
 
 class Table2Protocol(unittest.TestCase):
     records = None
+    release = None  # (latched stop's text, stop still latched after the release) or None
 
     @classmethod
     def setUpClass(cls):
@@ -47,6 +51,17 @@ class Table2Protocol(unittest.TestCase):
         runner = protocol.Table2Runner(rospy.get_param("~status_topic", "/controller/status"),
                                        rospy.get_param("~wall_scale", 1.0))
         runner.wait_ready()
+        if rospy.get_param("~latch_first", False) and pairs:
+            runner.put_at_start(pairs[0]["start"])
+            latched = runner.latch_stop_by_laser_dropout()
+            try:
+                released = runner.release_by_rider()
+            except RuntimeError as e:
+                released = "error: %s" % e
+            cls.release = (latched, released, runner.latched_stop())
+            rospy.loginfo("table2: latched %s; released %s; latched after: %s",
+                          protocol.describe(latched), released,
+                          protocol.describe(runner.latched_stop()))
         cls.records = []
         for pair in pairs:
             try:
@@ -67,6 +82,16 @@ class Table2Protocol(unittest.TestCase):
         with open(path, "w") as f:
             json.dump({"runs": cls.records, "summary": protocol.summarize(finished)}, f)
         rospy.loginfo("table2: runs written to %s", path)
+
+    def test_a_latched_stop_is_released_by_the_runners_go_to_place(self):
+        if not rospy.get_param("~latch_first", False):
+            self.skipTest("~latch_first not set")
+        latched, released, after = self.release
+        self.assertIsNotNone(latched, "the laser dropout latched no stop")
+        self.assertIsNotNone(released, "the release found no latched stop")
+        self.assertFalse(released.startswith("error"), released)
+        self.assertIsNone(after, "the stop is still latched after the rider's release: %s" %
+                          protocol.describe(after))
 
     def test_every_goal_reached_without_collision(self):
         self.assertTrue(self.records, "no pair was run")

@@ -5,13 +5,20 @@
 // start (exit 1, one line saying why) on a bad bring-up file, an override for a nodelet the file
 // does not list, a missing file a nodelet reads (*_file), or a nodelet that refuses to load
 // (an unknown or invalid parameter).
+// ~callback_cpu (std_msgs/String, latched, every second): the CPU seconds each nodelet's
+// callbacks took so far, as JSON {"wall_time": <s>, "/controller": 1.234, ...}
+// (wheelchair_core/callback_cpu.h; the manager's threads are shared, so /proc cannot tell the
+// nodelets apart); bench/system turns two of them into % of one core per nodelet.
 #include <wheelchair_bringup/bringup_config.h>
+#include <wheelchair_core/callback_cpu.h>
 
 #include <nodelet/loader.h>
 #include <ros/package.h>
 #include <ros/ros.h>
+#include <std_msgs/String.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <set>
@@ -145,6 +152,21 @@ int main(int argc, char** argv) {
     }
     ROS_INFO("loaded %s (%s)", name.c_str(), spec.type.c_str());
   }
+  ros::NodeHandle pnh("~");
+  ros::Publisher cpu_pub = pnh.advertise<std_msgs::String>("callback_cpu", 1, true);
+  const ros::WallTimer cpu_timer =
+      pnh.createWallTimer(ros::WallDuration(1.0), [&cpu_pub](const ros::WallTimerEvent&) {
+        std_msgs::String msg;
+        char item[160];
+        std::snprintf(item, sizeof(item), "{\"wall_time\": %.6f", ros::WallTime::now().toSec());
+        msg.data = item;
+        for (const auto& [nodelet, seconds] : wheelchair_core::callbackCpuSeconds()) {
+          std::snprintf(item, sizeof(item), ", \"%s\": %.6f", nodelet.c_str(), seconds);
+          msg.data += item;
+        }
+        msg.data += "}";
+        cpu_pub.publish(msg);
+      });
   ros::spin();
   return 0;
 }

@@ -140,6 +140,93 @@ void PathTracker::abort(const std::string& reason) {
   beginStop(reason, last_state_.tail<2>(), TrackerState::kAborted);
 }
 
+void PathTracker::stepsPaused(double gap) {
+  if (!isActive(state_)) return;  // at rest or stopping: nothing ran on
+  const std::string paused = format("control steps paused for %.2f s", gap);
+  if (gap > config_.hang_timeout) {
+    abort(paused);
+    return;
+  }
+  if (gap_restarts_ >= config_.max_gap_restarts) {
+    abort(paused + format(" (%.0f restarts from rest on this path before)", gap_restarts_));
+    return;
+  }
+  ++gap_restarts_;
+  restart_reason_ = "restarting from rest: " + paused;
+  restart_rest_time_ = 0.0;
+  if (restarting_) return;  // a pause during the brake: the same brake goes on
+  restarting_ = true;
+  restart_brake_started_ = false;  // from the wheel speeds measured after the pause
+  braking_for_direction_ = false;
+}
+
+bool PathTracker::restartStep(double now, double dt, const std::optional<PoseMeasurement>& pose,
+                              const WheelSpeedMeasurement& wheels, TrackerOutput& out) {
+  // Odometry only, as every stop: the pose may be what the pause left stale.
+  const bool odometry_fresh = wheels.eta.allFinite() && std::isfinite(wheels.stamp) &&
+                              now - wheels.stamp <= config_.stale_odometry_timeout;
+  const Eigen::Vector2d eta =
+      odometry_fresh ? wheels.eta : Eigen::Vector2d::Constant(std::nan(""));  // NaN: brake now
+  have_last_ = true;
+  last_time_ = now;
+  if (odometry_fresh) last_state_.tail<2>() = wheels.eta;
+  if (odometry_fresh && pose && pose->pose.isFinite() &&
+      now - pose->stamp <= config_.stale_pose_timeout)
+    last_state_ = estimateState(now, *pose, wheels.eta);  // the pose-jump check's base
+  last_torque_.setZero();
+  last_body_accel_.setZero();
+  out.state = state_;
+  out.reason = restart_reason_;
+  if (!restart_brake_started_) {
+    // From the wheel speeds as they are after the pause (the motors braked on their watchdog
+    // meanwhile, the last commanded acceleration is past): none measured, the brake at once.
+    stop_.start(eta, 0.0, 0.0);
+    restart_brake_started_ = true;
+  }
+  if (!stop_.finished()) {
+    out.command = stop_.step(eta, dt);
+    out.command.torque = saturateTorque(out.command.torque, chair_.max_wheel_torque).torque;
+    if (!out.command.brake) {
+      last_torque_ = out.command.torque;
+      return true;
+    }
+  }
+  out.command = WheelCommand{};  // the brake, until the drive goes on
+  const double rim_speed =
+      odometry_fresh ? wheels.eta.cwiseAbs().maxCoeff() * chair_.wheel_radius : INFINITY;
+  const std::string fault = checkInputs(now, pose, wheels);
+  if (rim_speed < kSettledSpeed && fault.empty()) {
+    restarting_ = false;
+    return false;
+  }
+  restart_rest_time_ += dt;
+  if (restart_rest_time_ > config_.hang_timeout) {
+    restarting_ = false;
+    beginStop(restart_reason_ + ", then " +
+                  (fault.empty() ? format("not at rest (rim speed %.3f m/s)", rim_speed) : fault),
+              odometry_fresh ? wheels.eta : Eigen::Vector2d::Zero(), TrackerState::kAborted);
+    out = stopStep(dt, odometry_fresh ? wheels.eta : Eigen::Vector2d::Zero());
+  }
+  return true;
+}
+
+void PathTracker::retimeFromRest(const State& x, bool from_start) {
+  Phase& phase = phases_.front();
+  const Eigen::Vector2d y = outputPoint(x.head<5>(), chair_, phase.ell);
+  // The chair braked to rest either behind the reference (it stood during the brake) or ahead
+  // of it (the brake's distance): searched a few seconds of reference time either way.
+  const double t0 =
+      from_start ? 0.0 : nearestTime(*phase.trajectory, y, phase_time_ - 3.0, phase_time_ + 6.0);
+  const double speed = phase.trajectory->at(t0).velocity.norm();
+  phase.trajectory = std::make_shared<RestartFromRestTrajectory>(
+      phase.trajectory, t0, restartRampTime(speed, config_.path_limits.longitudinal));
+  phase_time_ = 0.0;
+  overtime_ = 0.0;
+  rate_dot_ = 0.0;
+  rate_initialized_ = false;
+  startFromHere(x);
+}
+
 void PathTracker::hold(const std::string& source, const std::string& reason) {
   holds_[source] = reason;
   abort(reason);
@@ -162,6 +249,8 @@ void PathTracker::beginStop(const std::string& reason, const Eigen::Vector2d& et
   phases_.clear();
   path_pending_ = false;
   braking_for_direction_ = false;
+  restarting_ = false;
+  restart_new_path_ = false;
   // Reaching the goal ends this path, it is no stop a newer path must respect: a path that
   // came during the final moments (the rider's next goal) is still driven.
   if (end_state != TrackerState::kGoalReached) ++stop_count_;
@@ -247,6 +336,7 @@ void PathTracker::startPhases(const State& x) {
   }
   state_ = phases_.front().state;
   reason_.clear();
+  gap_restarts_ = 0;
   phase_time_ = 0.0;
   overtime_ = 0.0;
   goal_rotation_corrections_ = 0;
@@ -381,10 +471,18 @@ bool PathTracker::brakeForDirection(double now, double dt, const State& x, Track
 
 TrackerOutput PathTracker::update(double now, const std::optional<PoseMeasurement>& pose,
                                   const WheelSpeedMeasurement& wheels) {
+  if (have_last_ && now - last_time_ > config_.gap_timeout) stepsPaused(now - last_time_);
   const double dt =
       have_last_ ? std::clamp(now - last_time_, 1e-4, 10.0 * kNominalStep) : kNominalStep;
-  const bool resume = path_pending_;
   TrackerOutput out;
+  bool restarted = false;
+  if (restarting_) {
+    if (restartStep(now, dt, pose, wheels, out)) return out;
+    restarted = true;
+    // a path that came during the brake starts from rest (it was prepared while moving)
+    if (path_pending_) restart_new_path_ = true;
+  }
+  const bool resume = path_pending_;
   if (!isActive(state_) && !resume) {
     if (state_ == TrackerState::kStopping) out = stopStep(dt, wheels.eta);
     out.state = state_;
@@ -407,8 +505,14 @@ TrackerOutput PathTracker::update(double now, const std::optional<PoseMeasuremen
     if (brakeForDirection(now, dt, x, out)) return out;
     if (state_ == TrackerState::kStopping) state_ = TrackerState::kIdle;
     startPhases(x);
-    startFromHere(x);
+    if (restart_new_path_)
+      retimeFromRest(x, true);
+    else
+      startFromHere(x);
+    restart_new_path_ = false;
     path_pending_ = false;
+  } else if (restarted) {
+    retimeFromRest(x, false);
   }
   const Vector5 q = x.head<5>();
   out.output_offset = phases_.front().ell;

@@ -38,6 +38,9 @@ std::string TrackerConfig::validate() const {
       .positive("stale_pose_timeout", stale_pose_timeout)
       .positive("stale_odometry_timeout", stale_odometry_timeout)
       .positive("pose_jump", pose_jump)
+      .positive("gap_timeout", gap_timeout)
+      .check(hang_timeout >= gap_timeout, "hang_timeout must be at least gap_timeout")
+      .check(max_gap_restarts >= 0, "max_gap_restarts must be >= 0")
       .positive("governor_soft_error", governor_soft_error)
       .check(governor_hard_error > governor_soft_error,
              "governor_hard_error must exceed governor_soft_error")
@@ -61,6 +64,9 @@ void readTrackerConfig(wheelchair_core::ConfigReader& reader, TrackerConfig& con
   reader.read("stale_pose_timeout", config.stale_pose_timeout);
   reader.read("stale_odometry_timeout", config.stale_odometry_timeout);
   reader.read("pose_jump", config.pose_jump);
+  reader.read("gap_timeout", config.gap_timeout);
+  reader.read("hang_timeout", config.hang_timeout);
+  reader.read("max_gap_restarts", config.max_gap_restarts);
   reader.read("dynamic_terms", config.dynamic_terms);
   // A stop brakes the forward motion within the path's own comfort limits.
   config.stop.linear.accel = config.path_limits.longitudinal.accel;

@@ -1,6 +1,7 @@
 // The chair's robot model: /robot_description from the chair file, fixed joints on /tf_static,
 // wheel joints from /joint_states on /tf (angle zero until the first message) at most at
 // ~publish_frequency.
+#include <wheelchair_core/callback_cpu.h>
 #include <wheelchair_core/config.h>
 #include <wheelchair_description/chair_file.h>
 #include <wheelchair_description/urdf_generator.h>
@@ -75,6 +76,7 @@ class DescriptionPublisherNodelet : public nodelet::Nodelet {
   }
 
   void onJointStates(const sensor_msgs::JointState::ConstPtr& msg) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     if (msg->position.size() != msg->name.size()) {
       NODELET_WARN_THROTTLE(5.0, "joint_states ignored: %zu names but %zu positions",
                             msg->name.size(), msg->position.size());
@@ -100,6 +102,7 @@ class DescriptionPublisherNodelet : public nodelet::Nodelet {
   /// Keeps the wheels in the tree while no joint_states arrive (at their last angles, stamped
   /// now), whatever the stamps of the messages are.
   void onTimer(const ros::TimerEvent&) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     const ros::Time now = ros::Time::now();
     if (last_message_.isZero() || now - last_message_ >= period_) publishMovingJoints(now);
   }

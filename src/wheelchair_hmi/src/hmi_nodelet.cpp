@@ -8,6 +8,7 @@
 // verdict (wheelchair_msgs/LocalizationStatus) is told in the localizer's own words.
 #include "hmi_state_publisher.h"
 
+#include <wheelchair_core/callback_cpu.h>
 #include <wheelchair_hmi/places.h>
 #include <wheelchair_hmi/places_watch.h>
 #include <wheelchair_hmi/scan_state.h>
@@ -141,6 +142,7 @@ class HmiNodelet : public nodelet::Nodelet {
   }
 
   void onTimer(const ros::TimerEvent&) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     ClientCommand command;
     {
       std::lock_guard<std::mutex> lock(mutex_);

@@ -14,6 +14,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <wheelchair_core/callback_cpu.h>
 #include <wheelchair_kld/kld_localizer.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
@@ -73,6 +74,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   }
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     std::lock_guard<std::mutex> lock(mutex_);
     std::shared_ptr<const LocalizationMap> map;
     try {
@@ -104,6 +106,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   }
 
   void onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     std::lock_guard<std::mutex> lock(mutex_);
     if (!msg->header.frame_id.empty() && msg->header.frame_id != config_.map_frame) {
       NODELET_WARN("kld: initial pose in frame '%s' ignored (expected '%s')",
@@ -143,6 +146,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   /// could be used for tf_timeout although scans keep coming -- as not localized. A single late
   /// or dropped scan never changes the status.
   void onScanArrived(const sensor_msgs::LaserScan::ConstPtr& msg) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     std::lock_guard<std::mutex> lock(mutex_);
     const ros::Time now = ros::Time::now();
     if (last_tf_ok_.isZero() || now < last_tf_ok_) last_tf_ok_ = now;  // start, or time reset
@@ -170,6 +174,7 @@ class KldLocalizerNodelet : public nodelet::Nodelet {
   }
 
   void onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     std::lock_guard<std::mutex> lock(mutex_);
     if (!localizer_) {
       publishStatus(noData("no map yet"));

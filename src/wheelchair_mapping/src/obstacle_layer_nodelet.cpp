@@ -12,6 +12,7 @@
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <tf2_ros/buffer.h>
+#include <wheelchair_core/callback_cpu.h>
 #include <wheelchair_mapping/obstacle_layer.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
@@ -44,6 +45,7 @@ class ObstacleLayerNodelet : public nodelet::Nodelet {
   }
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     std::unique_ptr<ObstacleLayer> layer;
     try {  // before the lock: a refused map changes nothing
       layer =
@@ -62,6 +64,7 @@ class ObstacleLayerNodelet : public nodelet::Nodelet {
   }
 
   void onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     if (config_.require_localized && !localized_) {
       NODELET_INFO_THROTTLE(10.0, "scans not fused: not localized");
       return;

@@ -4,6 +4,7 @@
 // layer /obstacles (its kOccupied cells; updateMap, the plugin's map-change path). Its one loader
 // reads the host's keys, the shared settings (with the footprint of ~chair_file) and the plugin's
 // own keys, and refuses anything else.
+#include <wheelchair_core/callback_cpu.h>
 #include <wheelchair_msgs/MakePlan.h>
 #include <wheelchair_msgs/PlanCertificate.h>
 #include <wheelchair_planner/global_planner.h>
@@ -93,6 +94,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   }
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     // Any node can publish /map: a broken or oversized map is refused before anything is
     // prepared, and the planner keeps the last good one (it went without any before).
     const std::string problem = wheelchair_ros::occupancyGridProblem(*msg, map_limits_);
@@ -121,6 +123,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   /// The live obstacle layer: the next plan is made on /map plus its obstacles. No replan here:
   /// who drives (the navigator) decides when the change matters.
   void onObstacles(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     // Any node can publish it too: a broken layer is refused (a throw here aborted the process).
     const std::string problem = wheelchair_ros::occupancyGridProblem(*msg, map_limits_);
     if (!problem.empty()) {
@@ -160,6 +163,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   }
 
   void onGoal(const geometry_msgs::PoseStamped::ConstPtr& msg) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     std::lock_guard<std::mutex> lock(mutex_);
     std::string reason;
     const auto goal = fromPoseStamped(*msg, map_frame_, reason);
@@ -174,6 +178,7 @@ class PlannerHostNodelet : public nodelet::Nodelet {
   }
 
   bool onMakePlan(MakePlan::Request& req, MakePlan::Response& res) {
+    const wheelchair_core::CallbackCpuScope cpu(getName());  // CPU per nodelet (callback_cpu.h)
     std::lock_guard<std::mutex> lock(mutex_);
     std::string reason;
     const auto goal = fromPoseStamped(req.goal, map_frame_, reason);

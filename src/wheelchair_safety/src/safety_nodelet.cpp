@@ -11,6 +11,7 @@
 // manager's shared pool, and a scan never waits for tf inside a callback: the supervisor's view
 // of the laser and its permits do not wait behind another nodelet's callback (under the legacy
 // PC's CPU cap a 50 ms tf wait per scan held its permit timer past the driver's 100 ms).
+#include <wheelchair_core/callback_cpu.h>
 #include <wheelchair_description/chair_file.h>
 #include <wheelchair_msgs/LocalizationStatus.h>
 #include <wheelchair_ros/conversions.h>
@@ -174,7 +175,12 @@ class SafetyNodelet : public nodelet::Nodelet {
   /// The supervisor's own thread: its callbacks only, one at a time (as on a nodelet's queue).
   void spin() {
     pthread_setname_np(pthread_self(), "safety");  // per-thread CPU in /proc names it
-    while (running_ && ros::ok()) queue_.callAvailable(ros::WallDuration(0.05));
+    // every callback of this nodelet runs on this thread: its CPU is the nodelet's
+    std::atomic<int64_t>* cpu = &wheelchair_core::callbackCpuTotal(getName());
+    while (running_ && ros::ok()) {
+      const wheelchair_core::CallbackCpuScope measured(cpu);
+      queue_.callAvailable(ros::WallDuration(0.05));
+    }
   }
 
   /// A map any node may have published: refused with the reason unless usable (an uncaught

@@ -4,7 +4,8 @@
 // /wheel_torques for logs (and the simulator's direct mode), plus ~reference, ~tracking_error and
 // ~status for rviz and tests. Stops (controlled) on the supervisor's hold (drive channel: held
 // until it lifts it, i.e. the rider's release; /safety/stop is only its output), the driver's
-// latched stop (drive channel), a gap in its own control steps (a hang), /user_stop (Empty) and
+// latched stop (drive channel), a hang in its own control steps (a shorter pause: brake, then
+// on from rest; PathTracker::stepsPaused), /user_stop (Empty) and
 // /localization/status (wheelchair_msgs/LocalizationStatus) not `localized`.
 // A path's reference is built on a worker thread; the control step only swaps it in.
 // ~path_status (actionlib_msgs/GoalStatus, latched) says the same as ~status and which path it
@@ -31,6 +32,7 @@
 #include <wheelchair_ros/drive_channel.h>
 #include <wheelchair_ros/expected_publisher.h>
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <memory>
@@ -97,6 +99,8 @@ class ControllerNodelet : public nodelet::Nodelet {
   std::optional<std::string> safety_hold_;  ///< the supervisor's hold in effect (its sentence)
   std::uint64_t command_sequence_ = 0;
   double gap_timeout_ = 0.1, wall_gap_timeout_ = 0.5;
+  std::atomic<int64_t>* cpu_ = nullptr;  ///< this nodelet's callback CPU (callback_cpu.h)
+  std::atomic<int64_t>* references_cpu_ = nullptr;  ///< the worker's (preparePath)
   ros::Time last_step_;
   ros::WallTime last_wall_step_;
 

@@ -97,6 +97,13 @@ class PathTracker {
   double startSpeed() const;
   /// Stops (controlled) with the given reason.
   void abort(const std::string& reason);
+  /// The control steps paused for `gap` seconds (update() calls it itself for a gap of its
+  /// `now` beyond config.gap_timeout; the nodelet for one of wall time). While driving: up to
+  /// config.hang_timeout, and at most config.max_gap_restarts times a path, the chair brakes to
+  /// rest (odometry only), then the current phase's reference is re-timed from rest at the point
+  /// nearest the chair (RestartFromRestTrajectory) and the drive goes on; a longer pause, or
+  /// one more, is a hang: a controlled stop. Elsewhere (idle, stopping) nothing ran on.
+  void stepsPaused(double gap);
   /// A stop that lasts: e.g. the safety supervisor's stop or a lost localization. Stops now
   /// (controlled) and refuses paths until every hold is released; then a new path resumes.
   void hold(const std::string& source, const std::string& reason);
@@ -140,6 +147,14 @@ class PathTracker {
   /// A new path whose first piece goes against the chair's motion: brake to rest first. True
   /// while braking (`out` filled).
   bool brakeForDirection(double now, double dt, const State& x, TrackerOutput& out);
+  /// One step of the brake after a pause (stepsPaused); at rest with fresh inputs it re-times
+  /// the drive from rest and returns false (the step goes on as a drive step), else true with
+  /// `out` filled.
+  bool restartStep(double now, double dt, const std::optional<PoseMeasurement>& pose,
+                   const WheelSpeedMeasurement& wheels, TrackerOutput& out);
+  /// The current phase (or, `from_start`, a phase just begun) re-timed from rest at the point
+  /// of its reference nearest the chair.
+  void retimeFromRest(const State& x, bool from_start);
   Eigen::Vector2d trackingTorque(const State& x, const OutputReference& ref) const;
   void beginStop(const std::string& reason, const Eigen::Vector2d& eta, TrackerState end_state);
   TrackerOutput stopStep(double dt, const Eigen::Vector2d& eta);
@@ -155,6 +170,12 @@ class PathTracker {
   std::vector<std::shared_ptr<const OutputTrajectory>> piece_trajectories_;
   bool path_pending_ = false;
   bool braking_for_direction_ = false;
+  bool restarting_ = false;  ///< braking after a pause (stepsPaused)
+  bool restart_brake_started_ = false;
+  std::string restart_reason_;      ///< "restarting from rest: control steps paused for ..."
+  double restart_rest_time_ = 0.0;  ///< [s] since the brake ended, waiting for fresh inputs
+  int gap_restarts_ = 0;            ///< on this path
+  bool restart_new_path_ = false;   ///< a path came during the brake: it starts from rest
   std::map<std::string, std::string> holds_;  ///< source -> reason
   uint64_t stop_count_ = 0;
   struct Phase {

@@ -38,7 +38,16 @@ struct TrackerConfig {
   /// axle where it now is, at most this many times. Only P_l is controlled, so a localization
   /// correction of a few cm during the final rotation turns into l-scaled heading error.
   int max_goal_rotation_corrections = 2;
-  double stale_pose_timeout = 0.2;      ///< [s]
+  double stale_pose_timeout = 0.2;  ///< [s]
+  /// [s] a control step this much later than the previous one while driving is a pause (the
+  /// process was stopped or starved; the motors braked on their watchdog while the reference
+  /// would have run on): the chair brakes to rest, the reference is re-timed from rest where
+  /// the chair stands, and the drive goes on (PathTracker::stepsPaused).
+  double gap_timeout = 0.1;
+  /// [s] a longer pause is a hang: the drive ends in a controlled stop (the rider's next
+  /// command starts it again); so does a pause after max_gap_restarts restarts on one path.
+  double hang_timeout = 1.0;
+  int max_gap_restarts = 5;
   double stale_odometry_timeout = 0.2;  ///< [s]
   double pose_jump = 0.5;             ///< [m] between the predicted and the measured axle position
   double governor_soft_error = 0.10;  ///< [m] reference slows above this tracking error
@@ -58,7 +67,7 @@ struct TrackerConfig {
 /// Keys: natural_frequency, damping, max_speed, max_accel, max_jerk (the path's comfort
 /// limits; the controlled stop brakes within the same linear accel and jerk),
 /// reverse_lookahead, reverse_max_speed, stale_pose_timeout, stale_odometry_timeout, pose_jump,
-/// dynamic_terms.
+/// gap_timeout, hang_timeout, max_gap_restarts, dynamic_terms.
 void readTrackerConfig(wheelchair_core::ConfigReader& reader, TrackerConfig& config);
 
 }  // namespace wheelchair_controller

@@ -1,4 +1,5 @@
 #include <wheelchair_controller/controller_nodelet.h>
+#include <wheelchair_core/callback_cpu.h>
 #include <wheelchair_core/kinematics.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/parameters.h>
@@ -60,6 +61,8 @@ ControllerNodelet::~ControllerNodelet() {
 }
 
 void ControllerNodelet::onInit() {
+  cpu_ = &wheelchair_core::callbackCpuTotal(getName());  // before any callback can run
+  references_cpu_ = &wheelchair_core::callbackCpuTotal(getName() + " (path references)");
   ros::NodeHandle& nh = getNodeHandle();
   // The chair's controller: the only one that commands the base driver (a second one in the
   // process is refused, before anything is set up).
@@ -81,7 +84,7 @@ void ControllerNodelet::onInit() {
   }
   map_frame_ = params.map_frame;
   base_frame_ = params.base_frame;
-  gap_timeout_ = params.gap_timeout;
+  gap_timeout_ = params.tracker.gap_timeout;
   wall_gap_timeout_ = params.wall_gap_timeout;
 
   tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
@@ -103,6 +106,7 @@ void ControllerNodelet::onInit() {
 }
 
 void ControllerNodelet::onPath(const nav_msgs::Path::ConstPtr& msg) {
+  const wheelchair_core::CallbackCpuScope cpu(cpu_);
   std::vector<Pose2D> poses = pathPoses(*msg);
   const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
   std::lock_guard<std::mutex> lock(mutex_);
@@ -136,8 +140,10 @@ void ControllerNodelet::buildReferences() {
     const PathRequest request = std::move(*request_);
     request_.reset();
     lock.unlock();
-    const PreparedPath prepared =
-        preparePath(request.poses, chair_, tracker_->config(), request.initial_speed);
+    const PreparedPath prepared = [&] {
+      const wheelchair_core::CallbackCpuScope cpu(references_cpu_);
+      return preparePath(request.poses, chair_, tracker_->config(), request.initial_speed);
+    }();
     lock.lock();
     // Swap in only if no newer path came and no stop began meanwhile.
     if (request.sequence != path_sequence_) continue;
@@ -193,6 +199,7 @@ void ControllerNodelet::onLocalizationStatus(
 }
 
 void ControllerNodelet::onOdometry(const nav_msgs::Odometry::ConstPtr& msg) {
+  const wheelchair_core::CallbackCpuScope cpu(cpu_);
   std::lock_guard<std::mutex> lock(mutex_);
   wheels_.stamp = msg->header.stamp.toSec();
   const wheelchair_core::WheelRates rates =
@@ -212,25 +219,20 @@ std::optional<PoseMeasurement> ControllerNodelet::lookupPose() {
 }
 
 void ControllerNodelet::onTimer(const ros::TimerEvent&) {
+  const wheelchair_core::CallbackCpuScope cpu(cpu_);
   const ros::Time now = ros::Time::now();
   const ros::WallTime wall = ros::WallTime::now();
   const std::optional<PoseMeasurement> pose = lookupPose();
   wheelchair_ros::DriveCommand command;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    // A hang (the process stopped, starved, or its clock stood still): the reference ran on while
-    // the motors braked. The drive ends; the chair restarts from rest on the rider's command.
-    const TrackerState state = tracker_->state();
-    const bool moving = state == TrackerState::kAligning || state == TrackerState::kTracking ||
-                        state == TrackerState::kRotatingToGoal;
-    if (moving && !last_step_.isZero()) {
+    // A pause (the process stopped or starved) while driving: the motors braked on their
+    // watchdog while the reference would have run on. The tracker brakes to rest and re-times
+    // the drive from there, or ends it after a hang (PathTracker::stepsPaused). It sees a gap
+    // of ROS time itself; one of wall time only shows here (a simulated clock may stand).
+    if (!last_step_.isZero()) {
       const double gap = (now - last_step_).toSec(), wall_gap = (wall - last_wall_step_).toSec();
-      if (gap > gap_timeout_ || wall_gap > wall_gap_timeout_) {
-        char reason[96];
-        std::snprintf(reason, sizeof(reason), "control steps paused for %.2f s",
-                      std::max(gap, wall_gap));
-        tracker_->abort(reason);
-      }
+      if (wall_gap > wall_gap_timeout_ && gap <= gap_timeout_) tracker_->stepsPaused(wall_gap);
     }
     last_step_ = now;
     last_wall_step_ = wall;

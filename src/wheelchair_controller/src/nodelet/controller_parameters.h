@@ -19,10 +19,8 @@ struct ControllerParameters {
   std::string map_frame = "map";
   std::string base_frame = "base_link";
   double rate = 50.0;  ///< [Hz] control steps and /wheel_torques
-  /// [s] a control step this much later than the previous one (ROS time, or `wall_gap_timeout`
-  /// of wall time: a simulated clock may not show a hang) ends the drive: after a hang the
-  /// chair restarts from rest on a new command instead of resuming a reference that ran on.
-  double gap_timeout = 0.1;
+  /// [s] of wall time between control steps that is a pause as the tracker's gap_timeout is of
+  /// ROS time (a simulated clock may not show a hang): PathTracker::stepsPaused.
   double wall_gap_timeout = 0.5;
   /// The one node whose /safety/speed_limit is taken ("": this process, the chair's own
   /// supervisor): another publisher's limit is refused and reported, so it can never raise it.
@@ -34,9 +32,8 @@ struct ControllerParameters {
     wheelchair_core::ConfigChecks checks;
     checks.check(publisher_problem.empty(), publisher_problem);
     checks.positive("rate", rate)
-        .positive("gap_timeout", gap_timeout)
         .positive("wall_gap_timeout", wall_gap_timeout)
-        .check(gap_timeout > 1.0 / rate, "gap_timeout must exceed one control period")
+        .check(tracker.gap_timeout > 1.0 / rate, "gap_timeout must exceed one control period")
         .check(!chair_file.empty(), "chair_file must name the chair's description file")
         .check(!map_frame.empty() && !base_frame.empty(), "map_frame and base_frame must be set");
     const std::string tracker_problem = tracker.validate();
@@ -52,7 +49,6 @@ inline void readControllerParameters(wheelchair_core::ConfigReader& reader,
   reader.read("map_frame", p.map_frame);
   reader.read("base_frame", p.base_frame);
   reader.read("rate", p.rate);
-  reader.read("gap_timeout", p.gap_timeout);
   reader.read("wall_gap_timeout", p.wall_gap_timeout);
   reader.read("speed_limit_publisher", p.speed_limit_publisher);
   readTrackerConfig(reader, p.tracker);
