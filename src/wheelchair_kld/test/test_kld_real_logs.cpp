@@ -148,7 +148,9 @@ TEST(RealLogs, IntelTrackIsNeverThrownAwayOnTheBuildMapMap) {
 }
 
 // Two distant parts of the Intel drive spliced together (a kidnapping the odometry does not
-// see): noticed at once, the re-localization within a few updates.
+// see): noticed at once, and the pose found again, whether by a global re-localization or by the
+// augmented filter's random poses (300 -> 600 on the lattice-aligned build_map map: no
+// re-localization, bounded or not; 0.20 m largest error after 30 updates).
 TEST(RealLogs, AKidnappingSplicedIntoIntelIsNoticedWithinTwoUpdates) {
   if (!haveData({kIntelRaw, kIntelCorrected}))
     GTEST_SKIP() << "no real logs at " << kData << " (../shared/data beside the repository)";
@@ -159,11 +161,12 @@ TEST(RealLogs, AKidnappingSplicedIntoIntelIsNoticedWithinTwoUpdates) {
   for (const auto& [at, from] : {std::pair<long, long>{300, 600}, {700, 150}}) {
     const Replay r = replay(scans, raw, map, params, at, from);
     std::cout << "splice " << at << " -> " << from << ": noticed at update " << r.noticed
-              << ", re-localization at update " << r.relocalized_at << "\n";
+              << ", re-localization at update " << r.relocalized_at
+              << ", largest error after 30 updates " << r.max_error_after << " m\n";
     EXPECT_GE(r.noticed, 1);
     EXPECT_LE(r.noticed, 2);
-    EXPECT_GE(r.relocalized_at, 1);
-    EXPECT_LE(r.relocalized_at, 10);
+    EXPECT_LE(r.relocalized_at, 10) << "a re-localization, if any, within a few updates";
+    EXPECT_LT(r.max_error_after, 0.5) << "the pose is found again";
   }
 }
 
