@@ -64,8 +64,8 @@ class BackUpRecovery {
  public:
   /// A route from `start` (nullopt: the chair's pose as the planner knows it) to `goal`?
   /// Blocking; `detail`: the planner's word.
-  using RouteQuery =
-      std::function<bool(const std::optional<Pose2D>& start, const Pose2D& goal, std::string& detail)>;
+  using RouteQuery = std::function<bool(const std::optional<Pose2D>& start, const Pose2D& goal,
+                                        std::string& detail)>;
   /// Each verdict, for the log.
   using Log = std::function<void(const std::string&)>;
 

@@ -152,7 +152,8 @@ class NavigatorNodelet : public nodelet::Nodelet {
     // Issue 24: blocked in a dead end, back out along the way the chair came, only where the
     // trail's end has a route the chair's pose lacks (back_up.h, BackUpRecovery).
     back_up_ = std::make_unique<BackUpRecovery>(
-        BackUpConfig(), [this](const auto& start, const Pose2D& goal, std::string& detail) {
+        BackUpConfig(),
+        [this](const auto& start, const Pose2D& goal, std::string& detail) {
           return routeExists(start, goal, detail);
         },
         [this](const std::string& verdict) { NODELET_INFO("navigator: %s", verdict.c_str()); });
