@@ -48,8 +48,8 @@ std::vector<Pose2D> BackUpTrail::route(const BlockedSituation& situation) const 
   double along = 0.0;
   for (auto it = trail_.rbegin(); it != trail_.rend() && along < config_.distance; ++it) {
     const double step = gap(back.back(), *it);
-    if (back.size() == 1 && step > config_.max_jump) return {};  // the trail is not here
-    if (step < config_.spacing) continue;
+    if (it == trail_.rbegin() && step > config_.max_jump) return {};  // the trail is not here
+    if (step < (back.size() == 1 ? config_.first_step : config_.spacing)) continue;
     // Not beyond `distance`: the last pose is where the trail passes it.
     if (along + step > config_.distance) {
       const double f = (config_.distance - along) / step;
@@ -101,10 +101,9 @@ bool BackUpRecovery::samePlace(const Check& check, const BlockedSituation& s) co
 std::vector<Pose2D> BackUpRecovery::offer(const BlockedSituation& situation) {
   std::unique_lock<std::mutex> lock(mutex_);
   if (check_ && samePlace(*check_, situation)) {
-    if (!check_->done || !check_->helps) return {};  // running, or backing does not help here
-    std::vector<Pose2D> route = check_->route;
-    route.front() = situation.chair;
-    check_.reset();  // taken: a later block is checked afresh
+    if (!check_->done || !check_->helps) return {};       // running, or backing does not help here
+    std::vector<Pose2D> route = trail_.route(situation);  // from where the chair stands now
+    check_.reset();                                       // taken: a later block is checked afresh
     return route;
   }
   if (running_ || stopping_) return {};  // a check for another place still runs

@@ -138,9 +138,9 @@ TEST(BackUpRuleTest, ADeadEndWithAWayOnBehindGetsTheTrailBackOnTheNextAskFromThe
   EXPECT_FALSE(planner.asked[1].has_value()) << "then from the chair's own pose";
   const auto back = recovery.offer(at(4.02, 0.0, 0.0));  // the chair stands where it was
   ASSERT_GE(back.size(), 3u);
-  EXPECT_NEAR(back.front().x, 4.02, 1e-9);
-  EXPECT_NEAR(back.back().x, 2.0, 1e-6);
-  EXPECT_NEAR(wheelchair_core::reversedLength(back), 2.02, 1e-6);
+  EXPECT_NEAR(back.front().x, 4.02, 1e-9);  // from where it stands now, 2 m back
+  EXPECT_NEAR(back.back().x, 2.02, 1e-6);
+  EXPECT_NEAR(wheelchair_core::reversedLength(back), 2.0, 1e-6);
 }
 
 TEST(BackUpRuleTest, TheOnlyWayBlockedEverywhereGetsNoBackUpAndAsksThePlannerOnce) {
@@ -180,4 +180,16 @@ TEST(BackUpRuleTest, AVerdictForOnePlaceIsNotUsedElsewhereNorWithoutATrail) {
   EXPECT_EQ(planner.asked.size(), 4u);
   EXPECT_NEAR(planner.asked[2]->x, 3.0, 1e-6);
   EXPECT_FALSE(recovery.offer(at(5.0, 0.0, 0.0)).empty());
+}
+
+TEST(BackUpTrailTest, APoseCorrectedSidewaysAtRestStillBacksStraightAlongTheTrail) {
+  BackUpTrail trail;
+  driveAlongX(trail, 0.0, 4.0);
+  // Standing, the localizer moved the pose 6 cm sideways: the newest trail poses lie beside it.
+  const auto back = trail.route(at(4.0, 0.06, 0.0));
+  ASSERT_GE(back.size(), 2u);
+  const double first = std::atan2(back[1].y - back[0].y, back[1].x - back[0].x);
+  EXPECT_LT(std::abs(wheelchair_core::angleDifference(first, M_PI)), 0.15)
+      << "the first step goes straight back, not sideways";
+  EXPECT_NEAR(back.back().x, 2.0, 0.01);
 }

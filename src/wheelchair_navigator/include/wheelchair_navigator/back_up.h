@@ -27,6 +27,10 @@ struct BackUpConfig {
   double spacing = 0.05;      ///< [m] between recorded poses
   double max_jump = 0.5;      ///< [m] a longer step (a relocalization) starts a new trail
   double keep = 6.0;          ///< [m] trail kept behind the chair
+  /// [m] the first pose taken behind the chair at least this far: the localizer corrects a
+  /// standing chair's pose by a few cm sideways, and a nearer pose recorded before that made
+  /// the first step sideways (the controller turned in place to it, into a corridor's wall).
+  double first_step = 0.5;
 };
 
 class BackUpTrail {
