@@ -130,7 +130,8 @@ INSTANTIATE_TEST_SUITE_P(TestWorlds, World,
                          ::testing::Values(WorldSpec{"flat", 10.0, 12.0},
                                            WorldSpec{"office", 60.0, 24.0},
                                            WorldSpec{"hall", 50.0, 50.0},
-                                           WorldSpec{"symmetric", 24.0, 10.0}),
+                                           WorldSpec{"symmetric", 24.0, 10.0},
+                                           WorldSpec{"loop", 15.0, 6.5}),
                          [](const auto& info) { return info.param.name; });
 
 TEST(Flat, HasAtLeast30PlacesInAtLeast5Rooms) {

@@ -292,7 +292,31 @@ def symmetric():
     return w
 
 
-WORLDS = {"flat": flat, "office": office, "hall": hall, "symmetric": symmetric}
+def loop():
+    """Two rooms joined by two 8 m corridors, neither wide enough for the chair's body to turn
+    in: a 1.2 m one straight between the rooms' doors, and a 1.1 m one further round. Something
+    in the straight one makes it a dead end whose way on is backing out of it (issue 24)."""
+    w = World("loop", 15.0, 6.5, "loop: two rooms joined by a 1.2 m and a 1.1 m corridor, 8 m long")
+    w.rect(3.5, 0.2, 11.5, 0.9)  # solid between the rooms, but for the two corridors
+    w.rect(3.5, 2.0, 11.5, 3.9)  # round corridor y 0.9 .. 2.0, straight corridor y 3.9 .. 5.1
+    w.rect(3.5, 5.1, 11.5, 6.3)
+    # 0.2 m deep, 0.3 m wide recesses in the straight corridor's walls, staggered: features
+    # along it for the localizer (a plain corridor tells neither its length nor, with something
+    # unmapped ahead, its heading well); the chair still cannot turn there.
+    for x in (5.0, 7.0, 9.0, 11.0):
+        w.rect(x, 5.1, x + 0.3, 5.3, FREE)
+    for x in (4.0, 6.0, 8.0, 10.0):
+        w.rect(x, 3.7, x + 0.3, 3.9, FREE)
+    w.rect(0.2, 0.2, 1.0, 1.2)  # cupboard in room a
+    w.rect(13.6, 5.4, 14.8, 6.3)  # table in room b
+    for name, x, y, yaw in [("a_door", 2.00, 4.50, 0), ("a_centre", 2.00, 2.50, -90)]:
+        w.place("room_a", name, x, y, yaw)
+    for name, x, y, yaw in [("b_door", 13.00, 4.50, 0), ("b_centre", 13.00, 2.00, 90)]:
+        w.place("room_b", name, x, y, yaw)
+    return w
+
+
+WORLDS = {"flat": flat, "office": office, "hall": hall, "symmetric": symmetric, "loop": loop}
 
 
 def generate(out):

@@ -204,7 +204,8 @@ Output Navigator::onPlanAnswer(int plan_id, const PlanAnswer& answer, double now
         enterBlocked("no way around: " + answer.detail, now);
         break;
       }
-      if (state() == State::kDriving && !smoothFromHere(answer.path)) {
+      // A chair whose route has ended (a back-up driven to its end) stands: any way from here.
+      if (state() == State::kDriving && chair_may_move_ && !smoothFromHere(answer.path)) {
         // The planner checked the body's motion onto it from rest (a turn on the spot first);
         // the moving chair would swing its tail wide turning onto it: it stops first, waits
         // (a person walks on), and asks for a way round from where it stands.

@@ -103,7 +103,7 @@ std::string stateSentence(State state, const SentenceContext& context, RouteKind
     case State::kDriving:
       if (kind == RouteKind::kResumed) return "The way is free: going on.";
       if (kind == RouteKind::kAround) return fillAll("Going another way{to}: {distance}.", context);
-      if (kind == RouteKind::kBackUp) return "No way on ahead: backing out.";
+      if (kind == RouteKind::kBackUp) return "Backing out of the way we came.";
       return fillAll("Going{to}: {distance}.", context);
     case State::kWaiting:
       return "Something is in the way: waiting for it to move.";

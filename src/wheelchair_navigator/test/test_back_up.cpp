@@ -95,3 +95,101 @@ TEST(BackUpTrailTest, TheTrailKeepsOnlyTheLastMetres) {
   EXPECT_LE(trail.length(), 3.0 + 0.1);  // within one recorded step
   EXPECT_GE(trail.length(), 3.0);
 }
+
+// ---- the rule: back up only where the trail's end has a route the chair's pose lacks --------
+
+namespace {
+// A planner that knows routes from the places in `from` (and, for nullopt, `from_chair`).
+struct FakePlanner {
+  bool from_chair = false;
+  bool from_trail_end = false;
+  std::vector<std::optional<Pose2D>> asked;
+  BackUpRecovery::RouteQuery query() {
+    return [this](const std::optional<Pose2D>& start, const Pose2D&, std::string& detail) {
+      asked.push_back(start);
+      const bool route = start ? from_trail_end : from_chair;
+      detail = route ? "" : "no route";
+      return route;
+    };
+  }
+};
+void driveAlongX(BackUpRecovery& recovery, double x0, double x1) {
+  for (double x = x0; x <= x1 + 1e-9; x += 0.02) recovery.record({x, 0.0, 0.0});
+}
+}  // namespace
+
+TEST(BackUpRuleTest, BacksUpOnlyWhenTheTrailsEndHasARouteAndTheChairsPoseHasNone) {
+  EXPECT_TRUE(backUpHelps(false, true));
+  EXPECT_FALSE(backUpHelps(false, false));  // the only doorway blocked: backing cannot help
+  EXPECT_FALSE(backUpHelps(true, true));    // a way from here: drive that
+  EXPECT_FALSE(backUpHelps(true, false));
+}
+
+TEST(BackUpRuleTest, ADeadEndWithAWayOnBehindGetsTheTrailBackOnTheNextAskFromTheSamePlace) {
+  FakePlanner planner;
+  planner.from_trail_end = true;
+  BackUpRecovery recovery(BackUpConfig(), planner.query());
+  driveAlongX(recovery, 0.0, 4.0);
+  EXPECT_TRUE(recovery.offer(at(4.0, 0.0, 0.0)).empty()) << "the first ask only starts the check";
+  recovery.waitIdle();
+  ASSERT_EQ(planner.asked.size(), 2u);
+  ASSERT_TRUE(planner.asked[0].has_value()) << "first from the trail's end";
+  EXPECT_NEAR(planner.asked[0]->x, 2.0, 1e-6);  // 2 m back along the way it came
+  EXPECT_FALSE(planner.asked[1].has_value()) << "then from the chair's own pose";
+  const auto back = recovery.offer(at(4.02, 0.0, 0.0));  // the chair stands where it was
+  ASSERT_GE(back.size(), 3u);
+  EXPECT_NEAR(back.front().x, 4.02, 1e-9);  // from where it stands now, 2 m back
+  EXPECT_NEAR(back.back().x, 2.02, 1e-6);
+  EXPECT_NEAR(wheelchair_core::reversedLength(back), 2.0, 1e-6);
+}
+
+TEST(BackUpRuleTest, TheOnlyWayBlockedEverywhereGetsNoBackUpAndAsksThePlannerOnce) {
+  FakePlanner planner;  // no route from anywhere
+  BackUpRecovery recovery(BackUpConfig(), planner.query());
+  driveAlongX(recovery, 0.0, 4.0);
+  for (int ask = 0; ask < 4; ++ask) {
+    EXPECT_TRUE(recovery.offer(at(4.0, 0.0, 0.0)).empty());
+    recovery.waitIdle();
+  }
+  EXPECT_EQ(planner.asked.size(), 1u) << "the verdict holds while the chair stands there";
+}
+
+TEST(BackUpRuleTest, AWayFromWhereTheChairStandsGetsNoBackUp) {
+  FakePlanner planner;
+  planner.from_chair = planner.from_trail_end = true;
+  BackUpRecovery recovery(BackUpConfig(), planner.query());
+  driveAlongX(recovery, 0.0, 4.0);
+  EXPECT_TRUE(recovery.offer(at(4.0, 0.0, 0.0)).empty());
+  recovery.waitIdle();
+  EXPECT_TRUE(recovery.offer(at(4.0, 0.0, 0.0)).empty());
+}
+
+TEST(BackUpRuleTest, AVerdictForOnePlaceIsNotUsedElsewhereNorWithoutATrail) {
+  FakePlanner planner;
+  planner.from_trail_end = true;
+  BackUpRecovery recovery(BackUpConfig(), planner.query());
+  EXPECT_TRUE(recovery.offer(at(4.0, 0.0, 0.0)).empty());  // no trail yet: nothing asked
+  recovery.waitIdle();
+  EXPECT_TRUE(planner.asked.empty());
+  driveAlongX(recovery, 0.0, 4.0);
+  EXPECT_TRUE(recovery.offer(at(4.0, 0.0, 0.0)).empty());
+  recovery.waitIdle();
+  driveAlongX(recovery, 4.0, 5.0);  // it drove on 1 m: the verdict was for (4, 0)
+  EXPECT_TRUE(recovery.offer(at(5.0, 0.0, 0.0)).empty()) << "a new check, not the old verdict";
+  recovery.waitIdle();
+  EXPECT_EQ(planner.asked.size(), 4u);
+  EXPECT_NEAR(planner.asked[2]->x, 3.0, 1e-6);
+  EXPECT_FALSE(recovery.offer(at(5.0, 0.0, 0.0)).empty());
+}
+
+TEST(BackUpTrailTest, APoseCorrectedSidewaysAtRestStillBacksStraightAlongTheTrail) {
+  BackUpTrail trail;
+  driveAlongX(trail, 0.0, 4.0);
+  // Standing, the localizer moved the pose 6 cm sideways: the newest trail poses lie beside it.
+  const auto back = trail.route(at(4.0, 0.06, 0.0));
+  ASSERT_GE(back.size(), 2u);
+  const double first = std::atan2(back[1].y - back[0].y, back[1].x - back[0].x);
+  EXPECT_LT(std::abs(wheelchair_core::angleDifference(first, M_PI)), 0.15)
+      << "the first step goes straight back, not sideways";
+  EXPECT_NEAR(back.back().x, 2.0, 0.01);
+}

@@ -15,6 +15,7 @@
 #include <wheelchair_msgs/NavigateAction.h>
 #include <wheelchair_msgs/NavigatorState.h>
 #include <wheelchair_msgs/SafetyStatus.h>
+#include <wheelchair_navigator/back_up.h>
 #include <wheelchair_navigator/navigator.h>
 #include <wheelchair_ros/conversions.h>
 #include <wheelchair_ros/drive_channel.h>
@@ -148,16 +149,22 @@ class NavigatorNodelet : public nodelet::Nodelet {
     std::vector<NamedPoint> named;
     for (const auto& p : places_) named.push_back({p.name, p.pose.position()});
     navigator_->setPlaces(named);
-    // Issue 24's back-up recovery (back_up.h, BackUpTrail) is not set here yet: as written it
-    // backs out on every block, also where backing cannot help (the only doorway blocked:
-    // navigation_blocked backed 2 m, then said blocked; a person who would step aside). It
-    // needs a route from the trail's end that the chair's own pose lacks, and its rostest.
+    // Issue 24: blocked in a dead end, back out along the way the chair came, only where the
+    // trail's end has a route the chair's pose lacks (back_up.h, BackUpRecovery).
+    back_up_ = std::make_unique<BackUpRecovery>(
+        BackUpConfig(),
+        [this](const auto& start, const Pose2D& goal, std::string& detail) {
+          return routeExists(start, goal, detail);
+        },
+        [this](const std::string& verdict) { NODELET_INFO("navigator: %s", verdict.c_str()); });
+    navigator_->setBackUpHook([this](const BlockedSituation& s) { return back_up_->offer(s); });
     tf_buffer_ = wheelchair_ros::sharedTfBuffer();  // one /tf listener per process
 
     path_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, true);
     state_pub_ = nh.advertise<NavigatorState>("navigator/state", 5, true);
     simple_goal_pub_ = nh.advertise<move_base_msgs::MoveBaseActionGoal>("move_base/goal", 1);
     planner_ = nh.serviceClient<wheelchair_msgs::MakePlan>(params_.planner_service);
+    back_up_planner_ = nh.serviceClient<wheelchair_msgs::MakePlan>(params_.planner_service);
     planner_thread_ = std::thread(&NavigatorNodelet::plannerLoop, this);
     dispatcher_ = std::thread(&NavigatorNodelet::dispatchLoop, this);
 
@@ -326,6 +333,7 @@ class NavigatorNodelet : public nodelet::Nodelet {
     }
     std::lock_guard<std::mutex> lock(mutex_);
     const double now = ros::Time::now().toSec();
+    if (pose) back_up_->record(*pose);
     if (pose) handle(navigator_->onPose(*pose, now));
     handle(navigator_->tick(now));
     // A screen's distance to go: a few times a second while driving.
@@ -440,6 +448,23 @@ class NavigatorNodelet : public nodelet::Nodelet {
     return answer;
   }
 
+  /// The back-up check's question (its own thread and client): a route from `start` (nullopt:
+  /// tf's pose of the chair) to `goal` on the planner's map and obstacle layer?
+  bool routeExists(const std::optional<Pose2D>& start, const Pose2D& goal, std::string& detail) {
+    wheelchair_msgs::MakePlan srv;
+    srv.request.use_start = start.has_value();
+    srv.request.start.header.frame_id = srv.request.goal.header.frame_id = params_.map_frame;
+    srv.request.start.header.stamp = srv.request.goal.header.stamp = ros::Time::now();
+    if (start) srv.request.start.pose = wheelchair_ros::toPoseMsg(*start);
+    srv.request.goal.pose = wheelchair_ros::toPoseMsg(goal);
+    if (!back_up_planner_.call(srv)) {
+      detail = "the call of " + back_up_planner_.getService() + " failed";
+      return false;
+    }
+    detail = srv.response.reason;
+    return srv.response.success && !srv.response.plan.poses.empty();
+  }
+
   // ---- goal handles (the dispatcher thread only)
   // -------------------------------------------------
 
@@ -542,6 +567,8 @@ class NavigatorNodelet : public nodelet::Nodelet {
   std::optional<PlanRequest> plan_request_;
   std::thread planner_thread_;
   ros::ServiceClient planner_;
+  ros::ServiceClient back_up_planner_;  ///< the back-up check's (its own thread)
+  std::unique_ptr<BackUpRecovery> back_up_;
 
   std::mutex effects_mutex_;
   std::condition_variable effects_cv_;
