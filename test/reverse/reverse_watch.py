@@ -1,5 +1,6 @@
 """What the reverse tests watch besides the Rider: the chair's true forward speed (negative
 backing up) from /sim/ground_truth."""
+import math
 import threading
 
 import rospy
@@ -25,3 +26,22 @@ class ReverseWatch:
     def slowest(self, since):
         with self.lock:
             return min((v for t, v in self.speeds if t >= since), default=0.0)
+
+
+def drive_and_check_arrival(test, s, goal, limit=220.0):
+    """Sends `goal` from the Rider `s` and asserts what every reverse drive must end in: the
+    controller's goal_reached, the chair at rest within 10 cm / 10 deg of the goal by the truth,
+    no contact. Returns (since, what): the mark before the goal and the drive's description."""
+    since = s.mark()
+    s.send_goal(*goal)
+    done = s.wait(lambda: s.controller_says("goal_reached", since) or
+                  s.controller_says("aborted", since) or s.collided or
+                  s.announced("Cannot go there", since), limit)
+    what = s.describe(since)
+    test.assertTrue(done and s.controller_says("goal_reached", since), what)
+    test.assertTrue(s.wait(s.at_rest, 20.0))
+    distance, heading = s.error_to(*goal)
+    test.assertLess(distance, 0.10, what)
+    test.assertLess(heading, math.radians(10), what)
+    test.assertFalse(s.collided, "collision: " + what)
+    return since, what

@@ -14,7 +14,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reverse_watch import ReverseWatch  # noqa: E402
+from reverse_watch import ReverseWatch, drive_and_check_arrival  # noqa: E402
 from wheelchair_test.harness import Rider  # noqa: E402
 
 # In the room, facing away from its door (the rear 0.3 m inside it).
@@ -30,18 +30,7 @@ class LeaveRoom(unittest.TestCase):
         watch = ReverseWatch()
         self.assertEqual(s.wait_ready(), "")
         self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
-        since = s.mark()
-        s.send_goal(*GOAL)
-        done = s.wait(lambda: s.controller_says("goal_reached", since) or
-                      s.controller_says("aborted", since) or s.collided or
-                      s.announced("Cannot go there", since), 220.0)
-        what = s.describe(since)
-        self.assertTrue(done and s.controller_says("goal_reached", since), what)
-        self.assertTrue(s.wait(s.at_rest, 20.0))
-        distance, heading = s.error_to(*GOAL)
-        self.assertLess(distance, 0.10, what)
-        self.assertLess(heading, math.radians(10), what)
-        self.assertFalse(s.collided, "collision: " + what)
+        since, what = drive_and_check_arrival(self, s, GOAL)
         backed = watch.reversed_distance(since.time)
         slowest = watch.slowest(since.time)
         self.assertGreater(backed, 0.5, "the chair did not back out: " + what)

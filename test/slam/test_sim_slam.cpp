@@ -11,7 +11,8 @@
 // - tf map -> base_link at the end of the drive is within 10 cm / 0.05 rad of the true pose
 //   and closer to it than the odometry's (flat measured: 3 cm vs 32 cm);
 // - ~save_place writes the chair's pose into a new places file the HMI's reader loads: the
-//   SLAM's own pose within 2 cm, so the true pose within ~max_end_error; ~save_map writes a map file that loads, the trajectory and the graph.
+//   SLAM's own pose within 2 cm, so the true pose within ~max_end_error; ~save_map writes a map
+//   file that loads, the trajectory and the graph.
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/OccupancyGrid.h>

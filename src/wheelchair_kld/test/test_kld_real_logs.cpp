@@ -117,6 +117,8 @@ bool haveData(const std::vector<std::string>& files) {
 
 const std::string kIntelRaw = kData + "/intel/derived_intel_gt_rawodom.clf";
 const std::string kIntelCorrected = kData + "/intel/intel-corrected.log.gz";
+const std::string kFr101Raw = kData + "/fr101/fr101.carmen.log.gz";
+const std::string kFr101Corrected = kData + "/fr101/fr101.carmen.gfs.log.gz";
 
 // Issue 21: on build_map's Intel map the mean-fit rule (window 10 below 0.85) threw the correct
 // track away 5 times (1.28 m RMS); the contradiction rule keeps it, and the likelihood's peak as
@@ -176,10 +178,9 @@ TEST(RealLogs, AKidnappingSplicedIntoIntelIsNoticedWithinTwoUpdates) {
 // pose explains 333. With the untempered likelihood the filter re-localizes twice in that episode
 // (scans 4386 and 4393), never elsewhere.
 TEST(RealLogs, Fr101RawLogTracksItsCorrectedPoses) {
-  const std::string raw = kData + "/fr101/fr101.carmen.log.gz";
-  const std::string corrected = kData + "/fr101/fr101.carmen.gfs.log.gz";
-  if (!haveData({raw, corrected}))
+  if (!haveData({kFr101Raw, kFr101Corrected}))
     GTEST_SKIP() << "no real logs at " << kData << " (../shared/data beside the repository)";
+  const std::string &raw = kFr101Raw, &corrected = kFr101Corrected;
   const KldParams params;
   const auto map = buildMap(corrected, params);
   const Replay r = replay(readLog(raw), corrected, map, params);
@@ -195,10 +196,9 @@ TEST(RealLogs, Fr101RawLogTracksItsCorrectedPoses) {
 // no update weighs more than update_max_particles (unbounded the set grew to 100000: 160-274 ms
 // of CPU per update against the 0.21 s scan period); the pose is found again.
 TEST(RealLogs, AKidnappingSplicedIntoFr101IsNoticedAndEveryUpdateStaysWithinTheBound) {
-  const std::string raw = kData + "/fr101/fr101.carmen.log.gz";
-  const std::string corrected = kData + "/fr101/fr101.carmen.gfs.log.gz";
-  if (!haveData({raw, corrected}))
+  if (!haveData({kFr101Raw, kFr101Corrected}))
     GTEST_SKIP() << "no real logs at " << kData << " (../shared/data beside the repository)";
+  const std::string &raw = kFr101Raw, &corrected = kFr101Corrected;
   const KldParams params;
   const auto map = buildMap(corrected, params);
   const Replay r = replay(readLog(raw), corrected, map, params, 1500, 3000);
