@@ -91,6 +91,14 @@ void BayesMapper::markFootprint(const wheelchair_core::Pose2D& pose, double angl
   }
 }
 
+// A return's evidence goes hit_depth behind the echo (returnCellRange), within the insertion
+// range; a pass-through ends where it ends.
+double BayesMapper::cellRange(const BeamUse& use) const {
+  if (use.kind != BeamUse::kHit) return use.length;
+  return std::min(returnCellRange(use.length, config_.model.hit_depth),
+                  config_.model.max_insertion_range);
+}
+
 InsertResult BayesMapper::insert(const wheelchair_core::LaserScan2D& scan,
                                  const wheelchair_core::Pose2D& pose) {
   InsertResult result;
@@ -105,7 +113,7 @@ InsertResult BayesMapper::insert(const wheelchair_core::LaserScan2D& scan,
     if (uses[i].kind == BeamUse::kSkip) continue;
     ++result.beams_used;
     const double a = pose.yaw + scan.angle_min + i * scan.angle_increment;
-    const double reach = uses[i].length * (1 + std::tan(config_.model.beam_width / 2));
+    const double reach = cellRange(uses[i]) * (1 + std::tan(config_.model.beam_width / 2));
     x_min = std::min(x_min, pose.x + reach * std::cos(a));
     x_max = std::max(x_max, pose.x + reach * std::cos(a));
     y_min = std::min(y_min, pose.y + reach * std::sin(a));
@@ -122,9 +130,10 @@ InsertResult BayesMapper::insert(const wheelchair_core::LaserScan2D& scan,
   for (size_t i = 0; i < uses.size(); ++i) {
     if (uses[i].kind == BeamUse::kSkip) continue;
     const double a = pose.yaw + scan.angle_min + i * scan.angle_increment;
-    const double gx1 = gx0 + uses[i].length * std::cos(a) / res;
-    const double gy1 = gy0 + uses[i].length * std::sin(a) / res;
     const bool hit = uses[i].kind == BeamUse::kHit;
+    const double length = cellRange(uses[i]);
+    const double gx1 = gx0 + length * std::cos(a) / res;
+    const double gy1 = gy0 + length * std::sin(a) / res;
     // One cell per cell of travel (8-connected): the cells a beam only clips at a corner are
     // left alone. Freeing them as well (every crossed cell, 4-connected) erased the corners of
     // walls that beams pass at a grazing angle: on real logs the echoes at the corrected poses
@@ -136,7 +145,7 @@ InsertResult BayesMapper::insert(const wheelchair_core::LaserScan2D& scan,
           if (!(hit && last)) markFree(ix, iy);
         });
     if (hit && config_.model.beam_width > 0) {
-      markFootprint(pose, a, uses[i].length);
+      markFootprint(pose, a, length);
     } else if (hit) {
       markOccupied(static_cast<int>(std::floor(gx1)), static_cast<int>(std::floor(gy1)));
     }

@@ -30,12 +30,13 @@ using wheelchair_logs::savePreviewPng;
 
 const char* kUsage =
     "usage: build_map --log FILE --out MAP.yaml [--resolution M] [--max-range M]\n"
-    "                 [--no-echo-free M] [--hold-out N] [--preview FILE.png] [--quiet]\n"
-    "                 [--stats-json] [--scan-topic T] [--frame F]\n"
+    "                 [--no-echo-free M] [--hit-depth M] [--hold-out N] [--preview FILE.png]\n"
+    "                 [--quiet] [--stats-json] [--scan-topic T] [--frame F]\n"
     "  FILE              CARMEN log (plain or .gz) or rosbag (.bag)\n"
     "  --resolution M    cell size (default 0.05)\n"
     "  --max-range M     cells farther than this from the laser are not updated (default 20)\n"
     "  --no-echo-free M  treat no-echo beams as free space up to M metres (default: skip them)\n"
+    "  --hit-depth M     a return marks the cell M metres behind the echo (default 0)\n"
     "  --hold-out N      keep every Nth scan out of the map and report the fraction of its\n"
     "                    endpoints on occupied cells (map consistency)\n"
     "  --preview FILE    PNG preview (default: MAP.png next to MAP.yaml)\n"
@@ -46,6 +47,7 @@ const char* kUsage =
 struct Args {
   std::string log, out, preview, scan_topic = "/scan", frame = "odom";
   double resolution = 0.05, max_range = 20.0, no_echo_free = 0.0;
+  double hit_depth = MapperConfig().model.hit_depth;
   int hold_out = 0;
   bool quiet = false, stats_json = false;
 };
@@ -78,6 +80,8 @@ bool parseArgs(int argc, char** argv, Args& a) {
       ok = value(a.max_range);
     else if (k == "--no-echo-free")
       ok = value(a.no_echo_free);
+    else if (k == "--hit-depth")
+      ok = value(a.hit_depth);
     else if (k == "--hold-out")
       ok = value(a.hold_out);
     else if (k == "--quiet")
@@ -102,6 +106,7 @@ MapperConfig mapperConfig(const Args& a) {
   c.model.max_insertion_range = a.max_range;
   c.model.no_return_is_free = a.no_echo_free > 0;
   c.model.no_return_range = a.no_echo_free;
+  c.model.hit_depth = a.hit_depth;
   return c;
 }
 

@@ -25,6 +25,7 @@ void readMapperConfig(wheelchair_core::ConfigReader& r, MapperConfig& c) {
   r.read("no_return_is_free", m.no_return_is_free);
   r.read("no_return_range", m.no_return_range);
   r.read("beam_width", m.beam_width);
+  r.read("hit_depth", m.hit_depth);
 }
 
 }  // namespace wheelchair_mapping

@@ -47,6 +47,29 @@ TEST(BayesMapper, AWallCellHitOnceSurvivesTwoGrazingPasses) {
   EXPECT_GT(m.effectiveHitProbability(), 0.75);
 }
 
+// A wall face on a cell boundary (x = 3), echoes 1 cm short and 1 cm long in turn (range noise):
+// the short ones end in the free cell in front. With hit_depth 2 cm their evidence goes behind
+// the echo, into the wall's cell, and the cell in front stays free; with the echo's own cell
+// (hit_depth 0, the default) its hits outweigh the passes of the long echoes: two cells thick.
+TEST(BayesMapper, AnEchoOnACellBoundaryMarksTheCellBehindTheSurface) {
+  auto build = [](double hit_depth) {
+    MapperConfig config;
+    config.model.hit_depth = hit_depth;
+    BayesMapper m(config);
+    for (int k = 0; k < 10; ++k) {
+      const float r = 3.0f - 0.025f + (k % 2 ? 0.01f : -0.01f);
+      EXPECT_TRUE(m.insert(fan(0.0, 0.1, {r}, 1.0 + k), kOrigin).inserted);
+    }
+    return m;
+  };
+  const BayesMapper behind = build(0.02);
+  EXPECT_GT(occ(behind, 3.025, 0.025), 0.9) << "the wall's own cell";
+  EXPECT_LT(occ(behind, 2.975, 0.025), 0.5) << "the cell in front of the face is free";
+  const BayesMapper own_cell = build(0.0);
+  EXPECT_GT(occ(own_cell, 2.975, 0.025), 0.5) << "the echo's own cell thickens the wall";
+  EXPECT_DOUBLE_EQ(returnCellRange(2.0, 0.02), 2.02);
+}
+
 TEST(BayesMapper, PlusInfinityIsFreeUpToRangeMaxAndConfigurable) {
   BayesMapper m(MapperConfig{});
   ASSERT_TRUE(m.insert(fan(0.0, 0.1, {INFINITY}), kOrigin).inserted);

@@ -32,7 +32,7 @@ TEST(MappingParams, TheDefaultsAreValid) {
 TEST(MappingParams, EveryKeyOfTheMappingNodeIsRead) {
   const auto c = wheelchair_core::loadConfig<MappingNodeConfig>(
       YamlParameterSource(YAML::Load("{resolution: 0.1, expected_beams: 361, p_occ_hit: 0.8,"
-                                     " beam_width: 0.01, no_return_is_free: false,"
+                                     " beam_width: 0.01, hit_depth: 0.01, no_return_is_free: false,"
                                      " map_frame: map, publish_period: 0.5, save_path: a.yaml}"),
                           "test.yaml"),
       readMappingNodeConfig);
@@ -40,6 +40,7 @@ TEST(MappingParams, EveryKeyOfTheMappingNodeIsRead) {
   EXPECT_EQ(c.mapper.expected_beams, 361);
   EXPECT_DOUBLE_EQ(c.mapper.model.p_occ_hit, 0.8);
   EXPECT_DOUBLE_EQ(c.mapper.model.beam_width, 0.01);
+  EXPECT_DOUBLE_EQ(c.mapper.model.hit_depth, 0.01);
   EXPECT_FALSE(c.mapper.model.no_return_is_free);
   EXPECT_EQ(c.map_frame, "map");
   EXPECT_DOUBLE_EQ(c.publish_period, 0.5);

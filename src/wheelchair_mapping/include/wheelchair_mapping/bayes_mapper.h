@@ -8,6 +8,7 @@
 #include <wheelchair_core/occupancy_map.h>
 #include <wheelchair_mapping/mapper_config.h>
 #include <wheelchair_mapping/mrpt_conversions.h>
+#include <wheelchair_mapping/scan_checks.h>
 
 #include <cstddef>
 #include <string>
@@ -44,6 +45,8 @@ class BayesMapper {
   void markFree(int ix, int iy);
   void markOccupied(int ix, int iy);
   void markFootprint(const wheelchair_core::Pose2D& pose, double angle, double range);
+  /// Where the beam's last updated cell lies along it [m].
+  double cellRange(const BeamUse& use) const;
 
   MapperConfig config_;
   mrpt::maps::COccupancyGridMap2D grid_;

@@ -9,6 +9,11 @@ namespace wheelchair_mapping {
 /// P_s^o (probability the cell is occupied given the reading) and the stored P_m^o.
 double elfesUpdate(double p_sensor, double p_prior);
 
+/// The distance along the beam of the point whose cell receives a return's occupied evidence
+/// P_s^o = p_occ_hit (eq. 1 unchanged): the measured range plus hit_depth; every cell before
+/// that point's cell is passed.
+double returnCellRange(double measured_range, double hit_depth);
+
 /// What one beam says about the cells it crosses. MRPT stores cells as 8-bit log-odds
 /// (steps of 1/16), so the probabilities actually applied are the quantized ones returned by
 /// the effective*() helpers of BayesMapper.
@@ -33,8 +38,20 @@ struct InverseSensorModel {
   /// Angular width of a beam [rad]; > 0 marks every cell across the beam's footprint at the
   /// return as occupied (0: one cell per return).
   double beam_width = 0.0;
+  /// Depth behind the measured surface point at which a return's occupied evidence is placed
+  /// [m] (returnCellRange). An echo is the surface, the boundary between free space and matter;
+  /// the occupied cell is the one behind it. Where a world's surfaces lie on cell faces (every
+  /// wall of the simulator's drawn worlds) the echo's own cell is, by a range error of either
+  /// sign, half the time the free cell in front, and a hit outweighs 2.2 passes: walls one cell
+  /// thick (simulator, exact laser: 96.58 % of cells right). There 2 range sigmas (0.02 for the
+  /// 1 cm lasers) put 98 % of a face's echoes into the cell behind it (99.18 %). Real surfaces
+  /// lie anywhere in a cell, and moving the evidence of those in a cell's last 2 cm one cell on
+  /// costs the echoes there (Intel corrected, every 10th scan held out: 75.07 % on occupied
+  /// cells at 0, 68.82 % at 0.01, 60.56 % at 0.02), so 0 (the echo's own cell) unless the
+  /// surfaces are known to lie on cell faces.
+  double hit_depth = 0.0;
 
-  /// Empty if consistent, else every problem (probabilities in (0,1), hit > 0.5 > pass, ...).
+  /// Empty if consistent, else every problem (probabilities in (0,1), hit > 0.5 > pass, hit_depth in [0, 0.1] m, ...).
   std::string validate() const;
 };
 

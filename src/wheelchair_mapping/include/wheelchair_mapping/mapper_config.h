@@ -22,7 +22,8 @@ struct MapperConfig {
 };
 
 /// Every key: resolution, initial_size, growth_margin, expected_beams and the sensor model's
-/// p_occ_hit, p_occ_pass, max_insertion_range, no_return_is_free, no_return_range, beam_width.
+/// p_occ_hit, p_occ_pass, max_insertion_range, no_return_is_free, no_return_range, beam_width,
+/// hit_depth.
 void readMapperConfig(wheelchair_core::ConfigReader& reader, MapperConfig& config);
 
 }  // namespace wheelchair_mapping
