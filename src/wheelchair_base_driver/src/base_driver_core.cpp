@@ -235,6 +235,9 @@ void BaseDriverCore::riderRelease(double now) {
   block_time_ = now;
   // The brake frame sent now re-arms the MC's bad-frame report; a new bad frame sets it again.
   mc_faults_ &= static_cast<std::uint16_t>(~protocol::kReportOnlyFaults);
+  // The supervisor forgets the driver's fault at the release: a fault that still holds must be
+  // reported again even where the release changed nothing the rider would hear.
+  report_after_release_ = true;
   update(now, true);
 }
 
@@ -532,9 +535,10 @@ void BaseDriverCore::noteEvent(double now) {
   e.fault = isFault(state_);
   e.latched = estop_ || latch_.cause != LatchCause::kNone;
   e.sentence = sentence();
-  if (e.fault == last_event_.fault && e.latched == last_event_.latched &&
+  if (!report_after_release_ && e.fault == last_event_.fault && e.latched == last_event_.latched &&
       e.sentence == last_event_.sentence)
     return;
+  report_after_release_ = false;
   e.detail = std::string(driverStateName(state_));
   if (latch_.cause != LatchCause::kNone)
     e.detail += std::string(": ") + latchCauseName(latch_.cause) + ": " + latch_.detail;

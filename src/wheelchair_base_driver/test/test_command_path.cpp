@@ -481,5 +481,20 @@ TEST_F(CommandPathTest, EventsSayWhenAStopLatchesAndWhenTheRiderReleasesIt) {
   EXPECT_EQ(event->sentence, "");
 }
 
+// The supervisor forgets the driver's stop at the rider's release; the first state after a
+// release is therefore reported even when the release changed nothing of it.
+TEST_F(CommandPathTest, TheFirstStateAfterAReleaseIsReportedEvenWhenUnchanged) {
+  drive.run(0.5, 2.0);
+  while (h.driver.takeEvent()) {
+  }
+  h.driver.riderRelease(h.now);  // nothing was latched: no change
+  auto event = h.driver.takeEvent();
+  ASSERT_TRUE(event) << "the release's state was not reported";
+  EXPECT_FALSE(event->latched);
+  EXPECT_FALSE(event->fault);
+  drive.run(0.5, 2.0);
+  EXPECT_FALSE(h.driver.takeEvent()) << "only the first state after the release";
+}
+
 }  // namespace
 }  // namespace wheelchair_base_driver

@@ -159,6 +159,11 @@ void SafetySupervisor::onUserStop(double) { user_stop_ = true; }
 void SafetySupervisor::onUserCommand(double) {
   user_stop_ = false;
   latched_ = SafetyVerdict();
+  // The rider's release reaches the driver first (the drive channel), so the driver's fault or
+  // latch this record holds is released too: kept, it would latch this stop again at the next
+  // check, before the driver's report of its release arrives. A fault that still holds is
+  // reported again by the driver (its first report after a release is always sent).
+  driver_fault_ = false;
 }
 
 bool SafetySupervisor::knownObstacleNear(const Eigen::Vector2d& point) const {

@@ -102,6 +102,22 @@ TEST(SafetySupervisor, DriverFaultThatClearsWithinTheGraceDoesNotStop) {
   EXPECT_FALSE(s.check(10.0 + grace + 0.01).stop) << s.check(10.0 + grace + 0.01).detail;
 }
 
+// bench/navigation saw it: the rider's release reached the driver and the supervisor, and the
+// supervisor latched again at once on the driver's stop reported before the release.
+TEST(SafetySupervisor, TheRidersReleaseAlsoReleasesTheDriversStopItHeard) {
+  SafetySupervisor s = healthy();
+  const double grace = SafetyLimits().driver_fault_grace;
+  s.onDriverStatus(10.0 - grace, true, "the chair's computer paused");  // a latched driver stop
+  ASSERT_EQ(s.check(10.01).reason, StopReason::kDriverFault);
+  s.onUserCommand(10.02);
+  EXPECT_FALSE(s.check(10.03).stop) << s.check(10.03).detail;
+  // The fault still holds: the driver reports it again after the release, and it stops again.
+  s.onDriverStatus(10.04, true, "the motors report a fault");
+  s.onScan(10.04 + grace, {});
+  s.onPose(10.04 + grace, Pose2D{2.0, 2.0, 0.0});
+  EXPECT_EQ(s.check(10.05 + grace).reason, StopReason::kDriverFault);
+}
+
 TEST(SafetySupervisor, PersonSteppingOntoThePathAheadStops) {
   SafetySupervisor s = healthy();
   s.onScan(10.05, personAt(2.9, 2.1));  // 0.9 m ahead, on the path

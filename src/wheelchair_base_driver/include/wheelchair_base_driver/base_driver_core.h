@@ -270,6 +270,7 @@ class BaseDriverCore {
   std::string last_bus_error_;
   std::string last_rejection_;
   bool event_pending_ = false;
+  bool report_after_release_ = false;  ///< the first state after a rider's release is reported
   DriverEvent event_, last_event_;
 };
 

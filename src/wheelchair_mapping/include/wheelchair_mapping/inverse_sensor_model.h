@@ -51,7 +51,8 @@ struct InverseSensorModel {
   /// surfaces are known to lie on cell faces.
   double hit_depth = 0.0;
 
-  /// Empty if consistent, else every problem (probabilities in (0,1), hit > 0.5 > pass, hit_depth in [0, 0.1] m, ...).
+  /// Empty if consistent, else every problem (probabilities in (0,1), hit > 0.5 > pass, hit_depth
+  /// in [0, 0.1] m, ...).
   std::string validate() const;
 };
 
