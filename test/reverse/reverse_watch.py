@@ -31,7 +31,8 @@ class ReverseWatch:
 def drive_and_check_arrival(test, s, goal, limit=220.0):
     """Sends `goal` from the Rider `s` and asserts what every reverse drive must end in: the
     controller's goal_reached, the chair at rest within 10 cm / 10 deg of the goal by the truth,
-    no contact. Returns (since, what): the mark before the goal and the drive's description."""
+    no contact. Returns (since, what, distance, heading): the mark before the goal, the drive's
+    description and the true end pose's error [m, rad]."""
     since = s.mark()
     s.send_goal(*goal)
     done = s.wait(lambda: s.controller_says("goal_reached", since) or
@@ -44,4 +45,4 @@ def drive_and_check_arrival(test, s, goal, limit=220.0):
     test.assertLess(distance, 0.10, what)
     test.assertLess(heading, math.radians(10), what)
     test.assertFalse(s.collided, "collision: " + what)
-    return since, what
+    return since, what, distance, heading

@@ -30,7 +30,7 @@ class LeaveRoom(unittest.TestCase):
         watch = ReverseWatch()
         self.assertEqual(s.wait_ready(), "")
         self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
-        since, what = drive_and_check_arrival(self, s, GOAL)
+        since, what, distance, heading = drive_and_check_arrival(self, s, GOAL)
         backed = watch.reversed_distance(since.time)
         slowest = watch.slowest(since.time)
         self.assertGreater(backed, 0.5, "the chair did not back out: " + what)

@@ -27,7 +27,7 @@ class ThreePointTurn(unittest.TestCase):
         watch = ReverseWatch()
         self.assertEqual(s.wait_ready(), "")
         self.assertTrue(s.initialize(*START), "not localized: " + s.describe())
-        since, what = drive_and_check_arrival(self, s, GOAL)
+        since, what, distance, heading = drive_and_check_arrival(self, s, GOAL)
         with s.lock:
             certs = [c for c in s.certificates if c.cusps >= 1]
         self.assertTrue(certs, "no plan with a cusp: " + what)
