@@ -102,9 +102,8 @@ void KldLocalizer::startRelocalization() {
       params_.fixed_particles > 0 ? params_.fixed_particles : params_.relocalize_particles;
   // Bounded: the first share now (weighed at the next update with as many fresh ones beside it),
   // the rest at the following updates.
-  const int first = updatesBounded() && params_.fixed_particles == 0
-                        ? std::min(total, std::max(1, params_.update_max_particles / 4))
-                        : total;
+  const int first =
+      updatesBounded() ? std::min(total, std::max(1, params_.update_max_particles / 4)) : total;
   spreadUniform(first);
   spread_left_ = total - first;
   recovering_ = true;

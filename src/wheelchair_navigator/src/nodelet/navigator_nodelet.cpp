@@ -425,12 +425,24 @@ class NavigatorNodelet : public nodelet::Nodelet {
     }
   }
 
-  PlanAnswer askPlanner(const PlanRequest& request) {
+  /// The planner's question from `start` (nullopt: from tf map -> base_link, as the planner
+  /// host knows it) to `goal`, in the map frame.
+  wheelchair_msgs::MakePlan planQuestion(const std::optional<Pose2D>& start,
+                                         const Pose2D& goal) const {
     wheelchair_msgs::MakePlan srv;
-    srv.request.use_start = false;  // from tf map -> base_link, as the planner host knows it
+    srv.request.use_start = start.has_value();
     srv.request.goal.header.frame_id = params_.map_frame;
     srv.request.goal.header.stamp = ros::Time::now();
-    srv.request.goal.pose = wheelchair_ros::toPoseMsg(request.goal);
+    srv.request.goal.pose = wheelchair_ros::toPoseMsg(goal);
+    if (start) {
+      srv.request.start.header = srv.request.goal.header;
+      srv.request.start.pose = wheelchair_ros::toPoseMsg(*start);
+    }
+    return srv;
+  }
+
+  PlanAnswer askPlanner(const PlanRequest& request) {
+    wheelchair_msgs::MakePlan srv = planQuestion(std::nullopt, request.goal);
     PlanAnswer answer;
     const ros::WallTime started = ros::WallTime::now();
     if (!planner_.exists() && !planner_.waitForExistence(ros::Duration(2.0))) {
@@ -451,12 +463,7 @@ class NavigatorNodelet : public nodelet::Nodelet {
   /// The back-up check's question (its own thread and client): a route from `start` (nullopt:
   /// tf's pose of the chair) to `goal` on the planner's map and obstacle layer?
   bool routeExists(const std::optional<Pose2D>& start, const Pose2D& goal, std::string& detail) {
-    wheelchair_msgs::MakePlan srv;
-    srv.request.use_start = start.has_value();
-    srv.request.start.header.frame_id = srv.request.goal.header.frame_id = params_.map_frame;
-    srv.request.start.header.stamp = srv.request.goal.header.stamp = ros::Time::now();
-    if (start) srv.request.start.pose = wheelchair_ros::toPoseMsg(*start);
-    srv.request.goal.pose = wheelchair_ros::toPoseMsg(goal);
+    wheelchair_msgs::MakePlan srv = planQuestion(start, goal);
     if (!back_up_planner_.call(srv)) {
       detail = "the call of " + back_up_planner_.getService() + " failed";
       return false;
